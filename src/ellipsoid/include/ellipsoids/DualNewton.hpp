@@ -1,0 +1,44 @@
+/**
+ * @file DualNewton.hpp
+ * @brief Our method, beyond the founding paper: Newton's method on the dual problem.
+ *
+ * d* = max over unit n of L(n) = n.(r2 - r1) - sqrt(n^T P1 n) - sqrt(n^T P2 n).
+ * The gradient of L is v(n) = x2(n) - x1(n), the vector between the support
+ * points x1(n) = s_E1(n) and x2(n) = s_E2(-n); on the sphere the Hessian is
+ * -(Q1 + Q2 + L I) on the tangent plane, with Q_m the curvature-radius tensor
+ * of E_m at its support point, so a Newton step solves the 2x2 system
+ * (Q1 + Q2 + L I) dn = tangential part of v, followed by n <- (n + dn)/|n + dn|
+ * with a backtracking (Armijo) line search on L for global convergence.
+ *
+ * Stopping test (certified): |x2 - x1| - L(n) <= epsD, i.e. |v|(1 - cos angle(v, n)).
+ * The answer is |x2 - x1| with the bracket [L(n), |x2 - x1|].
+ *
+ * Signed form: when the bodies overlap the maximum of L is negative; its
+ * magnitude is the penetration depth (the shortest translation that separates
+ * the bodies) and n the direction to separate them. distance is then that
+ * negative maximum, status overlapping, lower = L(n) (certified) and
+ * upper = 0 once a common point of the bodies is found (x2(n) in E1 or
+ * x1(n) in E2). Overlap reported without a common point is checked with the
+ * Jia et al. test; if it disagrees, the status is failed (callers then use
+ * another method, as auto does).
+ */
+#ifndef ELLIPSOIDS_DUALNEWTON_HPP
+#define ELLIPSOIDS_DUALNEWTON_HPP
+
+#include "ellipsoids/DistanceMethod.hpp"
+
+namespace ellipsoids {
+
+class DualNewton : public DistanceMethod {
+ public:
+  static constexpr int kDefaultMaxIterations = 100;
+
+  std::string name() const override { return "dual"; }
+  bool isSigned() const override { return true; }
+  DistanceResult distance(const Ellipsoid& e1, const Ellipsoid& e2,
+                          const DistanceOptions& options) const override;
+};
+
+}  // namespace ellipsoids
+
+#endif

@@ -1,0 +1,92 @@
+#include "ellipsoids/AutoDistance.hpp"
+
+#include "ellipsoids/DualNewton.hpp"
+#include "ellipsoids/Gjk.hpp"
+#include "ellipsoids/MovingBalls.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+namespace ellipsoids {
+
+std::vector<AutoDistance::Rule> AutoDistance::defaultTable() {
+  const Scalar inf = std::numeric_limits<Scalar>::infinity();
+  return {{inf, inf, "dual"}};
+}
+
+std::vector<AutoDistance::Rule> AutoDistance::paperTable() {
+  const Scalar inf = std::numeric_limits<Scalar>::infinity();
+  // elongation < 3 <=> 1/3 < Ar < 3 for spheroids
+  return {{3 * (1 - 1e-12), inf, "movingBalls"}, {inf, inf, "gjk"}};
+}
+
+AutoDistance::AutoDistance() : AutoDistance(defaultTable()) {}
+
+AutoDistance::AutoDistance(const std::vector<Rule>& table) : table_(table) {
+  if (table_.empty()) {
+    throw std::invalid_argument("AutoDistance: the method table is empty");
+  }
+  for (const Rule& r : table_) {
+    if (r.method == "auto") {
+      throw std::invalid_argument("AutoDistance: a table row cannot name 'auto'");
+    }
+    tableMethods_.push_back(makeDistanceMethod(r.method));  // throws on unknown names
+  }
+  fallback_.push_back(std::make_unique<DualNewton>());
+  fallback_.push_back(std::make_unique<Gjk>());
+  fallback_.push_back(std::make_unique<MovingBalls>());
+}
+
+const DistanceMethod& AutoDistance::choose(const Ellipsoid& e1, const Ellipsoid& e2,
+                                           Scalar epsD) const {
+  const Scalar elongation = std::max(e1.elongation(), e2.elongation());
+  const Scalar relEps = epsD / std::min(e1.equivalentRadius(), e2.equivalentRadius());
+  for (std::size_t i = 0; i < table_.size(); ++i) {
+    if (elongation <= table_[i].maxElongation && relEps <= table_[i].maxRelativeEps) {
+      return *tableMethods_[i];
+    }
+  }
+  return *tableMethods_.back();
+}
+
+DistanceResult AutoDistance::distance(const Ellipsoid& e1, const Ellipsoid& e2,
+                                      const DistanceOptions& options) const {
+  options.validate();
+  DistanceOptions certified = options;
+  certified.stopRule = StopRule::certified;
+
+  auto acceptable = [&](const DistanceResult& r) {
+    return r.status == DistanceStatus::overlapping ||
+           (r.status == DistanceStatus::converged && r.bracketWidth() <= options.epsD);
+  };
+  auto unsign = [](DistanceResult r) {
+    if (r.status == DistanceStatus::overlapping) {
+      r.distance = 0;
+      r.lower = 0;
+      r.upper = 0;
+    }
+    return r;
+  };
+
+  const DistanceMethod& first = choose(e1, e2, options.epsD);
+  DistanceResult best = first.distance(e1, e2, certified);
+  if (acceptable(best)) {
+    return unsign(best);
+  }
+  int iterations = best.iterations;
+  for (const auto& m : fallback_) {
+    if (m->name() == first.name()) continue;
+    DistanceResult r = m->distance(e1, e2, certified);
+    iterations += r.iterations;
+    if (acceptable(r)) {
+      r.iterations = iterations;
+      return unsign(r);
+    }
+    if (r.bracketWidth() < best.bracketWidth()) best = r;
+  }
+  best.iterations = iterations;
+  return unsign(best);
+}
+
+}  // namespace ellipsoids

@@ -1,0 +1,172 @@
+// The dual Newton method: signed form (penetration depth), warm start,
+// iteration counts, spurious maxima.
+#include "ellipsoids/DualNewton.hpp"
+#include "ellipsoids/OverlapTest.hpp"
+#include "TestGeometry.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace ellipsoids;
+using namespace testgeometry;
+
+namespace {
+DistanceOptions eps(Scalar e) {
+  DistanceOptions o;
+  o.epsD = e;
+  return o;
+}
+}  // namespace
+
+TEST(DualNewton, SignedDistanceOfOverlappingSpheresIsMinusTheDepth) {
+  const DualNewton dual;
+  std::mt19937_64 rng(41);
+  for (Scalar d : {1.4, 1.0, 0.5, 0.1}) {  // centre distance; radii 1 and 0.5
+    const Vec3 n = randomUnit(rng);
+    const Ellipsoid s1 = Ellipsoid::sphere(1, Vec3(1, 1, 1));
+    const Ellipsoid s2 = Ellipsoid::sphere(0.5, s1.centre() + d * n);
+    const DistanceResult r = dual.distance(s1, s2, eps(1e-10));
+    EXPECT_EQ(r.status, DistanceStatus::overlapping);
+    EXPECT_NEAR(r.distance, d - 1.5, 1e-9);
+    EXPECT_LE(r.lower, d - 1.5);
+    EXPECT_GE(r.upper, d - 1.5);
+    EXPECT_LE(r.upper, 0);
+    EXPECT_LT((r.direction - n).norm(), 1e-6);
+  }
+}
+
+TEST(DualNewton, PenetrationDepthOfASpheroidAndASphereAlongTheAxis) {
+  // prolate a = 2, b = 1 along x, sphere R = 0.5 on the axis at distance d:
+  // pushing along the axis needs a + R - d < b + R (sideways) when d > a - b
+  const DualNewton dual;
+  const Ellipsoid e(Vec3(2, 1, 1), Vec3::Zero(), Quat::Identity());
+  for (Scalar d : {2.4, 2.2, 1.8}) {
+    const DistanceResult r = dual.distance(e, Ellipsoid::sphere(0.5, Vec3(d, 0, 0)), eps(1e-10));
+    EXPECT_EQ(r.status, DistanceStatus::overlapping);
+    EXPECT_NEAR(r.distance, d - 2.5, 1e-9) << "d " << d;
+    EXPECT_NEAR(r.direction.x(), 1, 1e-6);
+  }
+}
+
+namespace {
+
+/// max over unit n of L(n) by brute force: a Fibonacci sphere, then random refinement.
+Scalar bruteForceMaxL(const Ellipsoid& e1, const Ellipsoid& e2, std::mt19937_64& rng) {
+  const Vec3 dr = e2.centre() - e1.centre();
+  auto L = [&](const Vec3& n) { return n.dot(dr) - e1.supportRadius(n) - e2.supportRadius(n); };
+  Scalar best = -1e300;
+  Vec3 bestN = Vec3::UnitX();
+  const int m = 20000;
+  for (int i = 0; i < m; ++i) {
+    const Scalar z = 1 - 2 * (i + 0.5) / m, r = std::sqrt(1 - z * z), phi = i * 2.399963229728653;
+    const Vec3 n(r * std::cos(phi), r * std::sin(phi), z);
+    if (L(n) > best) {
+      best = L(n);
+      bestN = n;
+    }
+  }
+  std::normal_distribution<Scalar> g;
+  for (Scalar radius = 0.05; radius > 1e-9; radius *= 0.7) {
+    for (int k = 0; k < 60; ++k) {
+      const Vec3 n = (bestN + radius * Vec3(g(rng), g(rng), g(rng))).normalized();
+      if (L(n) > best) {
+        best = L(n);
+        bestN = n;
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+TEST(DualNewton, PenetrationDepthMatchesBruteForce) {
+  const DualNewton dual;
+  std::mt19937_64 rng(44);
+  for (int k = 0; k < 60; ++k) {
+    const Ellipsoid e1 = randomEllipsoid(rng, 0.2, 2, 0);
+    const Ellipsoid shape = randomEllipsoid(rng, 0.2, 2, 0);
+    const Vec3 n = randomUnit(rng);
+    // overlaps from slight to deep
+    const Scalar overlap = std::pow(10.0, -3 + 3 * (k % 4) / 3.0) * shape.minSemiAxis();
+    const Ellipsoid e2 = tangentPartner(e1, shape.semiAxes(), shape.orientation(), n, -overlap);
+    const DistanceResult r = dual.distance(e1, e2, eps(1e-10));
+    const Scalar brute = bruteForceMaxL(e1, e2, rng);
+    EXPECT_EQ(r.status, DistanceStatus::overlapping) << k;
+    EXPECT_GE(r.distance, brute - 1e-9) << k;   // at least as good as sampling
+    EXPECT_LE(r.distance, brute + 1e-6) << k;   // and sampling is close to it
+    EXPECT_LE(r.lower, r.distance);
+    EXPECT_LE(r.upper, 0);
+  }
+}
+
+TEST(DualNewton, SignMatchesTheOverlapTestOnNearTangentPairs) {
+  // gaps of +-1e-9 of the size: the sign of the dual distance and the exact
+  // algebraic test agree
+  const DualNewton dual;
+  const JiaOverlapTest jia;
+  std::mt19937_64 rng(42);
+  for (int k = 0; k < 1000; ++k) {
+    const Ellipsoid e1 = randomEllipsoid(rng, 0.1, 2, 1);
+    std::uniform_real_distribution<Scalar> u(0.1, 2);
+    const Vec3 ax2(u(rng), u(rng), u(rng));
+    const Vec3 n = randomUnit(rng);
+    const Scalar size = std::max(e1.maxSemiAxis(), ax2.maxCoeff());
+    for (Scalar gap : {1e-9, -1e-9}) {
+      const Ellipsoid e2 = tangentPartner(e1, ax2, randomRotation(rng), n, gap * size);
+      const DistanceResult r = dual.distance(e1, e2, eps(1e-12 * size));
+      const OverlapStatus o = jia.test(e1, e2);
+      if (gap > 0) {
+        EXPECT_EQ(o, OverlapStatus::separated) << k;
+        EXPECT_EQ(r.status, DistanceStatus::converged) << k;
+        EXPECT_GT(r.lower, 0) << k;
+        EXPECT_NEAR(r.distance, gap * size, 2e-12 * size) << k;
+      } else {
+        EXPECT_EQ(o, OverlapStatus::overlapping) << k;
+        EXPECT_EQ(r.status, DistanceStatus::overlapping) << k;
+        EXPECT_LT(r.distance, 0) << k;
+        EXPECT_NEAR(r.distance, gap * size, 2e-12 * size) << k;
+      }
+    }
+  }
+}
+
+TEST(DualNewton, FewIterationsAndWarmStartHelps) {
+  const DualNewton dual;
+  std::mt19937_64 rng(43);
+  long cold = 0, warm = 0;
+  int n = 0;
+  for (int k = 0; k < 500; ++k) {
+    const Ellipsoid e1 = Ellipsoid::spheroid(3, 1, Vec3::Zero(), randomRotation(rng));
+    const Ellipsoid e2 = Ellipsoid::spheroid(3, 1, 1.8 * randomUnit(rng), randomRotation(rng));
+    if (JiaOverlapTest().test(e1, e2) != OverlapStatus::separated) continue;
+    DistanceOptions o = eps(1e-5 * e1.minGaussianRadius());
+    const DistanceResult r = dual.distance(e1, e2, o);
+    ASSERT_EQ(r.status, DistanceStatus::converged);
+    EXPECT_LE(r.iterations, 15);
+    cold += r.iterations;
+    // a slightly moved pair started from the previous direction
+    const Quat dq(Eigen::AngleAxis<Scalar>(0.01, randomUnit(rng)));
+    const Ellipsoid e2moved(e2.semiAxes(), e2.centre() + 0.005 * randomUnit(rng), dq * e2.orientation());
+    o.useInitialDirection = true;
+    o.initialDirection = r.direction;
+    const DistanceResult w = dual.distance(e1, e2moved, o);
+    if (w.status == DistanceStatus::converged) {
+      warm += w.iterations;
+      ++n;
+    }
+  }
+  ASSERT_GT(n, 100);
+  EXPECT_LT(warm, cold);
+}
+
+TEST(DualNewton, ConcentricBodiesAreOverlappingWithTheThinnestDirection) {
+  const DualNewton dual;
+  const Ellipsoid e1(Vec3(3, 2, 1), Vec3::Zero(), Quat::Identity());
+  const Ellipsoid e2(Vec3(1.5, 1, 0.5), Vec3::Zero(), Quat::Identity());
+  const DistanceResult r = dual.distance(e1, e2, eps(1e-10));
+  EXPECT_EQ(r.status, DistanceStatus::overlapping);
+  EXPECT_NEAR(r.distance, -1.5, 1e-9);  // separate along z: 1 + 0.5
+  EXPECT_NEAR(std::abs(r.direction.z()), 1, 1e-6);
+}

@@ -1,0 +1,61 @@
+#!/bin/bash
+# End-to-end test of the ellipsoidDistance utility: output columns and values
+# for a sphere pair with a closed form, every method with -method all, and a
+# clear error (row number, exit status 1) for each kind of bad input.
+#   ellipsoidDistanceCli.sh <path to ellipsoidDistance>
+set -euo pipefail
+exe="$1"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+header="a1,b1,c1,x1,y1,z1,qw1,qx1,qy1,qz1,a2,b2,c2,x2,y2,z2,qw2,qx2,qy2,qz2"
+fail() { echo "FAIL: $*"; exit 1; }
+
+# spheres of radii 1 and 0.5, centres 3 apart: distance 1.5
+printf '%s\n%s\n%s\n' "$header" \
+    "1,1,1,0,0,0,1,0,0,0,0.5,0.5,0.5,3,0,0,1,0,0,0" \
+    "2,1,1,0,0,0,1,0,0,0,1,1,1,2.5,0,0,1,0,0,0" > "$tmp/pairs.csv"
+"$exe" -method all -eps 1e-9 -o "$tmp/out.csv" "$tmp/pairs.csv"
+head -n 1 "$tmp/out.csv" | grep -qx "row,method,status,distance,lower,upper,iterations,p1x,p1y,p1z,p2x,p2y,p2z,overlap" \
+    || fail "output header"
+[ "$(wc -l < "$tmp/out.csv")" -eq 15 ] || fail "expected 14 result rows (2 pairs x 7 methods)"
+/usr/bin/python3 - "$tmp/out.csv" <<'PY' || fail "values"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+for r in rows:
+    if r["row"] == "1":
+        assert r["status"] == "converged", r
+        assert abs(float(r["distance"]) - 1.5) < 1e-8, r
+        assert float(r["lower"]) <= 1.5 <= float(r["upper"]), r
+        assert r["overlap"] == "separated", r
+    else:
+        assert r["status"] == "overlapping" and r["overlap"] == "overlapping", r
+        if r["method"] == "dual":
+            assert abs(float(r["distance"]) + 0.5) < 1e-8, r   # signed: minus the depth
+        else:
+            assert float(r["distance"]) == 0, r
+assert {r["method"] for r in rows} == {"movingBalls", "gjk", "newtonCoulomb", "exteriorPenalty", "jain", "dual", "auto"}
+PY
+
+# standard input and -epsRel
+printf '%s\n%s\n' "$header" "1,1,1,0,0,0,1,0,0,0,1,1,1,0,3,0,1,0,0,0" \
+    | "$exe" -method dual -epsRel 1e-10 - | tail -n 1 | grep -q "^1,dual,converged,1," || fail "stdin"
+
+# bad input: exit status 1 and a message naming the row and the column
+expectError() {
+    local what="$1" line="$2" pattern="$3"
+    printf '%s\n%s\n' "$header" "$line" > "$tmp/bad.csv"
+    if "$exe" "$tmp/bad.csv" > "$tmp/out" 2> "$tmp/err"; then fail "$what: accepted"; fi
+    grep -q -- "$pattern" "$tmp/err" || { cat "$tmp/err"; fail "$what: message lacks '$pattern'"; }
+    echo "ok: $what: $(head -n 1 "$tmp/err")"
+}
+expectError "malformed row" "1,1,1,0,0,0,1,0,0" "row 1 .*fields"
+expectError "not a number" "1,1,1,0,0,0,1,0,0,0,1,1,1,x,0,0,1,0,0,0" "row 1 .*column x2"
+expectError "non-positive semi-axis" "1,0,1,0,0,0,1,0,0,0,1,1,1,3,0,0,1,0,0,0" "row 1 .*semi-axis b1"
+expectError "quaternion far from unit" "1,1,1,0,0,0,1,0,0,0,1,1,1,3,0,0,1.1,0,0,0" "row 1 .*quaternion"
+# within 1e-6 of unit norm: normalised silently
+printf '%s\n%s\n' "$header" "1,1,1,0,0,0,1.0000005,0,0,0,1,1,1,3,0,0,1,0,0,0" | "$exe" - > /dev/null \
+    || fail "near-unit quaternion rejected"
+# bad options: exit status 2
+if "$exe" -method nope "$tmp/pairs.csv" 2> "$tmp/err"; then fail "unknown method accepted"; fi
+grep -q "valid methods" "$tmp/err" || fail "unknown method message"
+echo "PASS"

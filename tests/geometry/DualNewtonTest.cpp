@@ -170,3 +170,47 @@ TEST(DualNewton, ConcentricBodiesAreOverlappingWithTheThinnestDirection) {
   EXPECT_NEAR(r.distance, -1.5, 1e-9);  // separate along z: 1 + 0.5
   EXPECT_NEAR(std::abs(r.direction.z()), 1, 1e-6);
 }
+
+// Configurations that once failed, with their numbers written out (17 digits).
+TEST(DualNewtonRegression, DeepOverlapOnceHitTheIterationLimit) {
+  // the Hessian shift of the overlap region was too strong: linear convergence
+  const Ellipsoid e1(Vec3(1.365572129656712, 0.75373897354812547, 0.86288824952409748),
+                     Vec3(-0.1181516000296365, -0.11792545528717649, 0.0025389240342483573),
+                     Quat(-0.7866037415840117, -0.35869477242282405, -0.22296435832034434,
+                          -0.4504214791518818));
+  const Ellipsoid e2(Vec3(1.9224588283512156, 1.7671528016591402, 1.8999956718101634),
+                     Vec3(0.13761807777359275, -0.083459043440685138, 0.15548969510409399),
+                     Quat(-0.92380938603706786, 0.19408163112703919, 0.074839047835049716,
+                          0.32141508310598438));
+  const DistanceResult r = DualNewton().distance(e1, e2, eps(1e-6));
+  EXPECT_EQ(r.status, DistanceStatus::overlapping);
+  EXPECT_LT(r.iterations, 30);
+}
+
+TEST(DualNewtonRegression, NearTangentPairOnceStalledBelowTheRoundingOfL) {
+  // gap 1.8e-9: L stopped increasing visibly while |x2 - x1| - L was 4e-9
+  const Ellipsoid e1(Vec3(1.6149419896971819, 1.8085716093555859, 0.44091131479186063),
+                     Vec3(-1.3553757087649012, 1.5035578435165178, -0.40296722181768779),
+                     Quat(0.069566593453791487, -0.96449935137054188, 0.078254487642586357,
+                          -0.24244117935044626));
+  const Ellipsoid e2(Vec3(1.3818184014488368, 0.29164134868758174, 0.87612566502467004),
+                     Vec3(-3.4096283954797664, 0.46238974818607581, -1.1457108966057163),
+                     Quat(0.66085356000773665, -0.072256881818373447, 0.73990467418387429,
+                          -0.10292030108701283));
+  const DistanceResult r = DualNewton().distance(e1, e2, eps(1.8e-12));
+  EXPECT_EQ(r.status, DistanceStatus::converged);
+  EXPECT_NEAR(r.distance, 1.808571609355586e-09, 5e-12);
+  EXPECT_LE(r.bracketWidth(), 1.8e-12);
+}
+
+TEST(DualNewtonRegression, MirrorCaseFromEq33OnceStoppedAsOverlapAtAPositiveDistance) {
+  // Ar 3/2, d* = 1e-6, eps 1e-4: L was -5.9e-7 with a predicted increase below
+  // eps, so the overlap test fired although the next step made L positive
+  const MirrorCase m = mirrorCase(1.5, 1e-6, 1);
+  DistanceOptions o = eps(1e-4);
+  o.useInitialDirection = true;
+  o.initialDirection = -Vec3(2 * m.xc, 2 * m.b, 2 * m.b).normalized();
+  const DistanceResult r = DualNewton().distance(m.e1, m.e2, o);
+  EXPECT_EQ(r.status, DistanceStatus::converged);
+  EXPECT_LE(std::abs(r.distance - m.exactDistance), 1e-4);
+}

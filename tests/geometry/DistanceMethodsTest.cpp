@@ -132,6 +132,8 @@ TEST_P(RobustMethod, AgreesWithTheOtherMethodsOnRandomPairs) {
     EXPECT_LE(r.lower, std::min(a.upper, b.upper)) << "pair " << k;
     EXPECT_GE(r.upper, std::max(a.lower, b.lower)) << "pair " << k;
     EXPECT_NEAR(r.distance, b.distance, eps) << "pair " << k;
+    // a unit direction: a drifting |n| once made the dual's lower bound exceed the distance
+    EXPECT_NEAR(r.direction.norm(), 1, 1e-14) << "pair " << k;
   }
   EXPECT_GT(separated, 500);
 }

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <vector>
 
 using namespace ellipsoids;
 using namespace testgeometry;
@@ -213,4 +214,43 @@ TEST(DualNewtonRegression, MirrorCaseFromEq33OnceStoppedAsOverlapAtAPositiveDist
   const DistanceResult r = DualNewton().distance(m.e1, m.e2, o);
   EXPECT_EQ(r.status, DistanceStatus::converged);
   EXPECT_LE(std::abs(r.distance - m.exactDistance), 1e-4);
+}
+
+TEST(DualNewtonBatch, SameAnswersAsOneAtATime) {
+  // separated, near-touching, overlapping and warm-started pairs, bit for bit
+  const DualNewton dual;
+  std::mt19937_64 rng(45);
+  std::vector<Ellipsoid> bodies;
+  std::vector<Vec3> warm;
+  for (int k = 0; k < 400; ++k) {
+    bodies.push_back(randomEllipsoid(rng, 0.1, 2, 1));
+    bodies.push_back(randomEllipsoid(rng, 0.1, 2, 2));
+    warm.push_back(randomUnit(rng));
+  }
+  std::vector<DistancePair> pairs;
+  for (int k = 0; k < 400; ++k) {
+    pairs.push_back({&bodies[2 * k], &bodies[2 * k + 1], k % 5 == 0 ? &warm[k] : nullptr});
+  }
+  DistanceOptions o = eps(1e-9);
+  std::vector<DistanceResult> batch(pairs.size());
+  dual.distances(pairs.data(), pairs.size(), o, batch.data());
+  int overlapping = 0;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    DistanceOptions ok = o;
+    if (pairs[k].initialDirection) {
+      ok.useInitialDirection = true;
+      ok.initialDirection = *pairs[k].initialDirection;
+    }
+    const DistanceResult one = dual.distance(*pairs[k].e1, *pairs[k].e2, ok);
+    EXPECT_EQ(batch[k].status, one.status) << k;
+    EXPECT_EQ(batch[k].distance, one.distance) << k;
+    EXPECT_EQ(batch[k].lower, one.lower) << k;
+    EXPECT_EQ(batch[k].upper, one.upper) << k;
+    EXPECT_EQ(batch[k].iterations, one.iterations) << k;
+    EXPECT_EQ(batch[k].point1, one.point1) << k;
+    overlapping += one.status == DistanceStatus::overlapping;
+  }
+  EXPECT_GT(overlapping, 20);
+  // empty batch
+  dual.distances(pairs.data(), 0, o, batch.data());
 }

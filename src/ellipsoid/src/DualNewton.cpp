@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 #include <utility>
 
 namespace ellipsoids {
@@ -63,6 +64,28 @@ struct DualPoint {
     evaluate(P1, P2, dr, V3(unitN));
   }
 
+  /**
+   * The same at n = m/|m| for any non-zero m: the normalisation of m runs in
+   * parallel with the support radii instead of before them (the square roots
+   * and divisions are the critical path of an iteration). y_m and s_m are
+   * homogeneous of degree 1 in m, the support points of degree 0.
+   */
+  void evaluateDirection(const Sym3& P1, const Sym3& P2, const V3& dr, const V3& m) {
+    const V3 y1m = P1 * m, y2m = P2 * m;
+    const Scalar q1 = dot(m, y1m), q2 = dot(m, y2m), mm = dot(m, m);
+    const Scalar im = 1 / std::sqrt(mm);
+    const Scalar i1 = 1 / std::sqrt(q1), i2 = 1 / std::sqrt(q2);
+    v = dr - y2m * i2 - y1m * i1;
+    n = m * im;
+    y1 = y1m * im;
+    y2 = y2m * im;
+    const Scalar absm = mm * im;
+    inv1 = i1 * absm;
+    inv2 = i2 * absm;
+    sumS = (q1 * i1 + q2 * i2) * im;
+    L = dot(m, dr) * im - sumS;
+  }
+
   Vec3 x1() const { return (y1 * inv1).eigen(); }
   Vec3 x2(const V3& dr) const { return (dr - y2 * inv2).eigen(); }
 
@@ -78,12 +101,6 @@ struct DualPoint {
     return denominator > 0 ? dot(t, t) / denominator : vnorm - vn;
   }
 };
-
-/// Unit vector along a + b.
-inline V3 normalizedSum(const V3& a, const V3& b) {
-  const V3 m = a + b;
-  return m * (1 / std::sqrt(dot(m, m)));
-}
 
 /**
  * Newton step: solves (Q1 + Q2 + Lm T) dn = v_t on the tangent plane of n
@@ -155,218 +172,298 @@ Eigen::Matrix<Scalar, 2, 2> curvatureTensor(const Sym3& P, const V3& yv, Scalar 
   return q;
 }
 
+/// Per-pair constants of the iteration.
+struct PairSetup {
+  Sym3 P1, P2;
+  V3 dr;           // r2 - r1
+  Scalar drNorm;
+  Scalar size;     // largest semi-axes summed
+  Scalar allow;    // rounding allowance of the bracket (= roundingAllowance(e1, e2))
+  Scalar roundingL;  // rounding of L = n.dr - s1 - s2
+  Scalar epsD, epsStop;
+  int maxIterations;
+
+  PairSetup(const Ellipsoid& e1, const Ellipsoid& e2, const DistanceOptions& options)
+      : P1(e1.shapeMatrix()), P2(e2.shapeMatrix()), dr(Vec3(e2.centre() - e1.centre())) {
+    drNorm = std::sqrt(dot(dr, dr));
+    size = e1.maxSemiAxis() + e2.maxSemiAxis();
+    allow = 32 * kEps * (drNorm + size);
+    roundingL = 4 * kEps * (drNorm + size);
+    epsD = options.epsD;
+    epsStop = options.epsD - 2 * allow;
+    maxIterations = options.maxIterations > 0 ? options.maxIterations : DualNewton::kDefaultMaxIterations;
+  }
+};
+
+/// The first iterate: the given direction, or the centre line.
+void start(const PairSetup& p, const Ellipsoid& e1, const DistanceOptions& options, DualPoint& cur) {
+  if (options.useInitialDirection) {
+    cur.evaluate(p.P1, p.P2, p.dr, Vec3(options.initialDirection.normalized()));
+  } else if (p.drNorm > 0) {
+    cur.evaluateDirection(p.P1, p.P2, p.dr, p.dr);  // normalised on the way
+  } else {
+    cur.evaluate(p.P1, p.P2, p.dr, Vec3(e1.rotation().col(0)));  // concentric: any direction
+  }
+}
+
+enum class Step { converged, moved, overlapping, general };
+
+/**
+ * One iteration of the fast path. Certified stop for separated bodies; else,
+ * where Q1 + Q2 + L I is positive definite (always near the maximum of
+ * separated bodies), the full Newton step, accepted if L increases as
+ * predicted or, below the rounding of L, if the tangential gradient decreases
+ * (near the optimum L is flat, second order in the angle, while the bracket
+ * still needs a smaller angle at small gaps: |x2 - x1| - L ~ (R angle)^2 / gap).
+ * Anything else is left to the general path.
+ */
+Step fastStep(const PairSetup& p, DualPoint*& cur, DualPoint*& trial, int it) {
+  const Scalar vn = dot(cur->v, cur->n);  // = L up to rounding
+  const V3 vt = cur->v - cur->n * vn;
+  const Scalar vt2 = dot(vt, vt);
+  // |v| - v.n = |v_t|^2 / (|v| + v.n) <= |v_t|^2 / (2 v.n), tested without a square root
+  if (cur->L > 0 && vn > 0 && vt2 <= 2 * vn * p.epsStop) return Step::converged;
+
+  V3 raw;  // the Newton step times det
+  Scalar det;
+  const bool atMaximum = newtonStep(p.P1, p.P2, *cur, vt, cur->L, raw, det);  // Hessian negative definite
+  // From a poor start (the first two iterations), with L < 0, the curvature
+  // term max(L, 0) still gives an ascent direction: fewer iterations for
+  // elongated bodies than the shifted general path (measured 5-10 %). Not
+  // later: at the maximum of an overlap L < 0 is the answer, and ignoring it
+  // would slow Newton down to a crawl
+  if (!atMaximum && !(it < 2 && cur->L < 0 && newtonStep(p.P1, p.P2, *cur, vt, 0, raw, det))) {
+    return Step::general;
+  }
+  // n_new = (det n + raw)/|det n + raw|, at most a quarter turn per step
+  // (|raw| <= det); the normalisation happens inside the evaluation
+  const Scalar raw2 = dot(raw, raw), det2 = det * det;
+  const Scalar scale = raw2 <= det2 ? det : std::sqrt(raw2);
+  const Scalar predicted = dot(vt, raw) / scale;
+  if (atMaximum && cur->L <= 0 && predicted <= Scalar(0.1) * p.epsD && cur->L + predicted < 0) {
+    return Step::overlapping;  // the overlap's maximum, to the tolerance
+  }
+  if (!(predicted > 0)) return Step::general;
+  trial->evaluateDirection(p.P1, p.P2, p.dr, cur->n * scale + raw);
+  const V3 tt = trial->tangential();
+  if (trial->L >= cur->L + Scalar(1e-4) * predicted ||
+      (predicted <= 64 * p.roundingL && trial->L >= cur->L - 2 * p.roundingL && dot(tt, tt) < vt2)) {
+    std::swap(cur, trial);
+    return Step::moved;
+  }
+  return Step::general;
+}
+
+enum class GeneralStep { moved, converged, overlapping, failed };
+
+/**
+ * One iteration of the general path: the 2x2 system on a tangent basis,
+ * shifted to be positive definite, an escape from saddles along the direction
+ * of negative curvature, and a backtracking line search.
+ */
+GeneralStep generalStep(const PairSetup& p, DualPoint*& cur, DualPoint*& trial) {
+  if (cur->L > 0 && cur->gap() + 2 * p.allow <= p.epsD) return GeneralStep::converged;
+  const Vec3 curN = cur->n.eigen(), curV = cur->v.eigen();
+  Vec3 t1, t2;
+  tangentBasis(curN, t1, t2);
+  const Eigen::Matrix<Scalar, 2, 1> G(t1.dot(curV), t2.dot(curV));
+  Eigen::Matrix<Scalar, 2, 2> H = curvatureTensor(p.P1, cur->y1, cur->inv1, t1, t2) +
+                                  curvatureTensor(p.P2, cur->y2, cur->inv2, t1, t2);
+  H(0, 0) += cur->L;
+  H(1, 1) += cur->L;
+  const Scalar tr = H.trace();
+  const Scalar detH = H.determinant();
+  const Scalar lambdaMin = Scalar(0.5) * (tr - std::sqrt(std::max(tr * tr - 4 * detH, Scalar(0))));
+  const Scalar scaleH = std::abs(H(0, 0)) + std::abs(H(1, 1)) + std::abs(H(0, 1)) + p.size * kEps;
+  if (lambdaMin < 0 && G.norm() <= 64 * p.roundingL) {
+    // a saddle of L (e.g. a symmetric start): leave along the direction of
+    // negative curvature of H, where L increases
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix<Scalar, 2, 2>> es(H);
+    const Vec3 escape = es.eigenvectors()(0, 0) * t1 + es.eigenvectors()(1, 0) * t2;
+    for (Scalar t = 1; t > 1e-6; t *= Scalar(0.5)) {
+      for (Scalar sign : {1.0, -1.0}) {
+        trial->evaluate(p.P1, p.P2, p.dr, Vec3((curN + sign * t * escape).normalized()));
+        if (trial->L > cur->L + 2 * p.roundingL) {
+          std::swap(cur, trial);
+          return GeneralStep::moved;
+        }
+      }
+    }
+  }
+  if (lambdaMin <= Scalar(1e-3) * scaleH) {
+    const Scalar shift = Scalar(1e-3) * scaleH - lambdaMin;
+    H(0, 0) += shift;
+    H(1, 1) += shift;
+  }
+  Eigen::Matrix<Scalar, 2, 1> step = H.llt().solve(G);
+  if (!step.allFinite()) return GeneralStep::failed;
+  const Scalar stepNorm = step.norm();
+  if (stepNorm > 1) step /= stepNorm;
+  const Scalar predicted = G.dot(step);  // first-order increase of L for the full step
+  auto atMaximum = [&] {
+    return cur->L > 0 ? (cur->gap() + 2 * p.allow <= p.epsD ? GeneralStep::converged : GeneralStep::failed)
+                      : GeneralStep::overlapping;
+  };
+  if (!(predicted > 0)) return atMaximum();  // stationary: the maximum of L (to rounding)
+  // overlap: stop when the predicted increase is below the tolerance and
+  // cannot make L positive (near touching, keep iterating: the sign matters)
+  if (cur->L <= 0 && predicted <= Scalar(0.1) * p.epsD && cur->L + predicted < 0) {
+    return GeneralStep::overlapping;
+  }
+  const bool belowRounding = predicted <= 64 * p.roundingL;
+  const V3 ct = cur->tangential();
+  const Scalar grad2 = dot(ct, ct);
+  Scalar t = 1;
+  for (int ls = 0; ls < 40; ++ls) {
+    const Vec3 m = curN + t * (step[0] * t1 + step[1] * t2);
+    trial->evaluate(p.P1, p.P2, p.dr, Vec3(m.normalized()));
+    const V3 tt = trial->tangential();
+    if (trial->L >= cur->L + Scalar(1e-4) * t * predicted ||
+        (belowRounding && trial->L >= cur->L - 2 * p.roundingL && dot(tt, tt) < grad2)) {
+      std::swap(cur, trial);
+      return GeneralStep::moved;
+    }
+    t *= Scalar(0.5);
+  }
+  return atMaximum();  // no further increase representable: at the maximum up to rounding
+}
+
+/// The result from the final iterate: points, bracket, and the overlap's certification.
+DistanceResult finish(const PairSetup& p, const Ellipsoid& e1, const Ellipsoid& e2, const DualPoint& cur,
+                      DistanceStatus status, int iterations) {
+  DistanceResult res;
+  res.status = status;
+  res.iterations = iterations;
+  res.point1 = e1.centre() + cur.x1();
+  res.point2 = e1.centre() + cur.x2(p.dr);
+  res.direction = cur.n.eigen();
+  if (status == DistanceStatus::overlapping || (status != DistanceStatus::converged && cur.L <= 0)) {
+    // certify the overlap with a common point, else ask the exact algebraic test
+    const bool common = e1.levelSet(res.point2) <= 0 || e2.levelSet(res.point1) <= 0 ||
+                        e1.levelSet(e2.centre()) <= 0 || e2.levelSet(e1.centre()) <= 0;
+    res.distance = cur.L;
+    res.lower = cur.L - p.allow;
+    if (common) {
+      res.upper = 0;
+    } else if (JiaOverlapTest().test(e1, e2) != OverlapStatus::separated) {
+      res.upper = p.allow;  // touching or overlapping by the exact test
+    } else {
+      res.status = DistanceStatus::failed;  // a spurious local maximum of L
+      res.upper = (res.point2 - res.point1).norm() + p.allow;
+    }
+    if (res.status == DistanceStatus::overlapping && res.upper < res.lower) res.upper = res.lower;
+    return res;
+  }
+  res.distance = std::sqrt(dot(cur.v, cur.v));
+  res.lower = cur.L - p.allow;
+  // rounding of the absolute points: |p| <= |p|_1 (no square root)
+  res.upper = res.distance + p.allow + 4 * kEps * (res.point1.cwiseAbs().sum() + res.point2.cwiseAbs().sum());
+  return res;
+}
+
 }  // namespace
 
 DistanceResult DualNewton::distance(const Ellipsoid& e1, const Ellipsoid& e2,
                                     const DistanceOptions& options) const {
   options.validate();
-  const int maxIterations = options.maxIterations > 0 ? options.maxIterations : kDefaultMaxIterations;
-  const Sym3 P1(e1.shapeMatrix());
-  const Sym3 P2(e2.shapeMatrix());
-  const Vec3 drE = e2.centre() - e1.centre();
-  const V3 dr(drE);
-  const Scalar drNorm = drE.norm();
-  const Scalar size = e1.maxSemiAxis() + e2.maxSemiAxis();
-  const Scalar allow = 32 * kEps * (drNorm + size);  // = roundingAllowance(e1, e2)
-  const Scalar roundingL = 4 * kEps * (drNorm + size);  // rounding of L = n.dr - s1 - s2
-  const Scalar epsStop = options.epsD - 2 * allow;
-
-  Vec3 n0;
-  if (options.useInitialDirection) {
-    n0 = options.initialDirection.normalized();
-  } else if (drNorm > 0) {
-    n0 = drE / drNorm;
-  } else {
-    n0 = e1.rotation().col(0);  // concentric: any direction
-  }
-
+  const PairSetup p(e1, e2, options);
   DualPoint points[2];
   DualPoint* cur = &points[0];    // the iterate
   DualPoint* trial = &points[1];  // the candidate; accepted by swapping the pointers
-  cur->evaluate(P1, P2, dr, n0);
-  if (!options.useInitialDirection && drNorm > 0) {
-    // a second candidate start: the outward normal of E1 minus that of E2 where
-    // the centre segment crosses their surfaces (fewer iterations for bodies
-    // that are not far from spheres; measured in docs/benchmarks.md)
-    const Vec3 m = (e1.quadraticMatrix() * drE).normalized() + (e2.quadraticMatrix() * drE).normalized();
-    const Scalar m2 = m.squaredNorm();
-    if (m2 > 0) {
-      trial->evaluate(P1, P2, dr, Vec3(m / std::sqrt(m2)));
-      if (trial->L > cur->L) std::swap(cur, trial);
-    }
-  }
+  start(p, e1, options, *cur);
 
-  DistanceResult res;
-  res.status = DistanceStatus::maxIterations;
+  DistanceStatus status = DistanceStatus::maxIterations;
   int it = 0;
-  for (; it < maxIterations; ++it) {
-    const Scalar vn = dot(cur->v, cur->n);  // = L up to rounding
-    const V3 vt = cur->v - cur->n * vn;
-    const Scalar vt2 = dot(vt, vt);
-    // Certified stop for separated bodies: |v| - v.n = |v_t|^2 / (|v| + v.n)
-    // <= |v_t|^2 / (2 v.n), tested without a square root
-    if (cur->L > 0 && vn > 0 && vt2 <= 2 * vn * epsStop) {
-      res.status = DistanceStatus::converged;
+  for (; it < p.maxIterations; ++it) {
+    const Step s = fastStep(p, cur, trial, it);
+    if (s == Step::moved) continue;
+    if (s == Step::converged) {
+      status = DistanceStatus::converged;
       break;
     }
-
-    // Fast path: where Q1 + Q2 + L I is positive definite (always near the
-    // maximum of separated bodies), the full Newton step, accepted if L
-    // increases as predicted or, below the rounding of L, if the tangential
-    // gradient decreases (near the optimum L is flat, second order in the
-    // angle, while the bracket still needs a smaller angle at small gaps:
-    // |x2 - x1| - L ~ (R angle)^2 / gap)
-    V3 raw;  // the Newton step times det
-    Scalar det;
-    const bool atMaximum = newtonStep(P1, P2, *cur, vt, cur->L, raw, det);  // Hessian negative definite
-    // From a poor start (the first two iterations), with L < 0, the curvature
-    // term max(L, 0) still gives an ascent direction: fewer iterations for
-    // elongated bodies than the shifted general path (measured 5-10 %). Not
-    // later: at the maximum of an overlap L < 0 is the answer, and ignoring it
-    // would slow Newton down to a crawl
-    if (atMaximum || (it < 2 && cur->L < 0 && newtonStep(P1, P2, *cur, vt, 0, raw, det))) {
-      // n_new = (n + raw/det)/|n + raw/det| = (det n + raw)/|det n + raw|, at most
-      // a quarter turn per step (|raw| <= det). The norm is computed, not taken
-      // as sqrt(det^2 + |raw|^2): raw is tangent only to rounding, and |n| - 1
-      // would grow from one iteration to the next
-      const Scalar raw2 = dot(raw, raw), det2 = det * det;
-      const Scalar scale = raw2 <= det2 ? det : std::sqrt(raw2);
-      const V3 nNew = normalizedSum(cur->n * scale, raw);
-      const Scalar predicted = dot(vt, raw) / scale;
-      if (atMaximum && cur->L <= 0 && predicted <= Scalar(0.1) * options.epsD && cur->L + predicted < 0) {
-        res.status = DistanceStatus::overlapping;  // the overlap's maximum, to the tolerance
-        break;
-      }
-      if (predicted > 0) {
-        trial->evaluate(P1, P2, dr, nNew);
-        const V3 tt = trial->tangential();
-        if (trial->L >= cur->L + Scalar(1e-4) * predicted ||
-            (predicted <= 64 * roundingL && trial->L >= cur->L - 2 * roundingL &&
-             dot(tt, tt) < vt2)) {
-          std::swap(cur, trial);
-          continue;
-        }
-      }
-    }
-
-    // General path: 2x2 system on a tangent basis, shifted to be positive
-    // definite, saddle escape, backtracking line search
-    if (cur->L > 0 && cur->gap() + 2 * allow <= options.epsD) {
-      res.status = DistanceStatus::converged;
+    if (s == Step::overlapping) {
+      status = DistanceStatus::overlapping;
       break;
     }
-    const Vec3 curN = cur->n.eigen(), curV = cur->v.eigen();
-    Vec3 t1, t2;
-    tangentBasis(curN, t1, t2);
-    const Eigen::Matrix<Scalar, 2, 1> G(t1.dot(curV), t2.dot(curV));
-    Eigen::Matrix<Scalar, 2, 2> H = curvatureTensor(P1, cur->y1, cur->inv1, t1, t2) +
-                                    curvatureTensor(P2, cur->y2, cur->inv2, t1, t2);
-    H(0, 0) += cur->L;
-    H(1, 1) += cur->L;
-    const Scalar tr = H.trace();
-    const Scalar detH = H.determinant();
-    const Scalar lambdaMin = Scalar(0.5) * (tr - std::sqrt(std::max(tr * tr - 4 * detH, Scalar(0))));
-    const Scalar scaleH = std::abs(H(0, 0)) + std::abs(H(1, 1)) + std::abs(H(0, 1)) + size * kEps;
-    if (lambdaMin < 0 && G.norm() <= 64 * roundingL) {
-      // a saddle of L (e.g. a symmetric start): leave along the direction of
-      // negative curvature of H, where L increases
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix<Scalar, 2, 2>> es(H);
-      const Vec3 escape = es.eigenvectors()(0, 0) * t1 + es.eigenvectors()(1, 0) * t2;
-      bool moved = false;
-      for (Scalar t = 1; t > 1e-6 && !moved; t *= Scalar(0.5)) {
-        for (Scalar sign : {1.0, -1.0}) {
-          trial->evaluate(P1, P2, dr, Vec3((curN + sign * t * escape).normalized()));
-          if (trial->L > cur->L + 2 * roundingL) {
-            moved = true;
-            break;
-          }
-        }
-      }
-      if (moved) {
-        std::swap(cur, trial);
+    const GeneralStep g = generalStep(p, cur, trial);
+    if (g == GeneralStep::moved) continue;
+    status = g == GeneralStep::converged     ? DistanceStatus::converged
+             : g == GeneralStep::overlapping ? DistanceStatus::overlapping
+                                             : DistanceStatus::failed;
+    break;
+  }
+  return finish(p, e1, e2, *cur, status, it);
+}
+
+void DualNewton::distances(const DistancePair* pairs, std::size_t count, const DistanceOptions& options,
+                           DistanceResult* results) const {
+  options.validate();
+  // Lanes of independent queries advanced in turn: each iteration is a chain
+  // of dependent square roots and divisions, so interleaving queries keeps the
+  // core busy. A lane whose query leaves the fast path is finished by the
+  // one-pair method (rare); a finished lane takes the next query.
+  constexpr int kLanes = 4;
+  struct Lane {
+    std::size_t query;
+    PairSetup setup;
+    DualPoint points[2];
+    DualPoint* cur;
+    DualPoint* trial;
+    int it;
+  };
+  alignas(64) unsigned char storage[kLanes * sizeof(Lane)];
+  Lane* lanes = reinterpret_cast<Lane*>(storage);
+  int active = 0;
+  std::size_t next = 0;
+  auto load = [&](Lane& lane) {
+    while (next < count) {
+      const DistancePair& q = pairs[next];
+      if (q.initialDirection) {  // warm starts go through the one-pair method's options
+        DistanceOptions o = options;
+        o.useInitialDirection = true;
+        o.initialDirection = *q.initialDirection;
+        results[next] = distance(*q.e1, *q.e2, o);
+        ++next;
         continue;
       }
+      new (&lane) Lane{next, PairSetup(*q.e1, *q.e2, options), {}, nullptr, nullptr, 0};
+      lane.cur = &lane.points[0];
+      lane.trial = &lane.points[1];
+      start(lane.setup, *q.e1, options, *lane.cur);
+      ++next;
+      return true;
     }
-    if (lambdaMin <= Scalar(1e-3) * scaleH) {
-      const Scalar shift = Scalar(1e-3) * scaleH - lambdaMin;
-      H(0, 0) += shift;
-      H(1, 1) += shift;
-    }
-    Eigen::Matrix<Scalar, 2, 1> step = H.llt().solve(G);
-    if (!step.allFinite()) {
-      res.status = DistanceStatus::failed;
-      break;
-    }
-    const Scalar stepNorm = step.norm();
-    if (stepNorm > 1) step /= stepNorm;
-    const Scalar predicted = G.dot(step);  // first-order increase of L for the full step
-    if (!(predicted > 0)) {
-      // stationary: the maximum of L (to rounding)
-      res.status = cur->L > 0 ? (cur->gap() + 2 * allow <= options.epsD ? DistanceStatus::converged
-                                                                     : DistanceStatus::failed)
-                             : DistanceStatus::overlapping;
-      break;
-    }
-    // overlap: stop when the predicted increase is below the tolerance and
-    // cannot make L positive (near touching, keep iterating: the sign matters)
-    if (cur->L <= 0 && predicted <= Scalar(0.1) * options.epsD && cur->L + predicted < 0) {
-      res.status = DistanceStatus::overlapping;
-      break;
-    }
-    const bool belowRounding = predicted <= 64 * roundingL;
-    const V3 ct = cur->tangential();
-    const Scalar grad2 = dot(ct, ct);
-    Scalar t = 1;
-    bool accepted = false;
-    for (int ls = 0; ls < 40; ++ls) {
-      const Vec3 m = curN + t * (step[0] * t1 + step[1] * t2);
-      trial->evaluate(P1, P2, dr, Vec3(m.normalized()));
-      const V3 tt = trial->tangential();
-      if (trial->L >= cur->L + Scalar(1e-4) * t * predicted ||
-          (belowRounding && trial->L >= cur->L - 2 * roundingL && dot(tt, tt) < grad2)) {
-        accepted = true;
-        break;
+    return false;
+  };
+  for (; active < kLanes && load(lanes[active]); ++active) {
+  }
+  while (active > 0) {
+    for (int k = 0; k < active;) {
+      Lane& lane = lanes[k];
+      const DistancePair& q = pairs[lane.query];
+      const Step s = lane.it < lane.setup.maxIterations ? fastStep(lane.setup, lane.cur, lane.trial, lane.it)
+                                                        : Step::general;
+      if (s == Step::moved) {
+        ++lane.it;
+        ++k;
+        continue;
       }
-      t *= Scalar(0.5);
+      if (s == Step::converged) {
+        results[lane.query] = finish(lane.setup, *q.e1, *q.e2, *lane.cur, DistanceStatus::converged, lane.it);
+      } else {
+        results[lane.query] = distance(*q.e1, *q.e2, options);  // the one-pair method from the start
+      }
+      if (!load(lane)) {
+        lanes[k] = lanes[--active];  // compact; the moved lane's pointers must follow it
+        if (k < active) {
+          Lane& moved = lanes[k];
+          const bool first = moved.cur == &lanes[active].points[0];
+          moved.cur = &moved.points[first ? 0 : 1];
+          moved.trial = &moved.points[first ? 1 : 0];
+        }
+      }
     }
-    if (!accepted) {
-      // no further increase representable: at the maximum up to rounding
-      res.status = cur->L > 0 ? (cur->gap() + 2 * allow <= options.epsD ? DistanceStatus::converged
-                                                                     : DistanceStatus::failed)
-                             : DistanceStatus::overlapping;
-      break;
-    }
-    std::swap(cur, trial);
   }
-  res.iterations = it;
-  res.point1 = e1.centre() + cur->x1();
-  res.point2 = e1.centre() + cur->x2(dr);
-  res.direction = cur->n.eigen();
-
-  if (res.status == DistanceStatus::overlapping ||
-      (res.status != DistanceStatus::converged && cur->L <= 0)) {
-    // certify the overlap with a common point, else ask the exact algebraic test
-    const bool common = e1.levelSet(res.point2) <= 0 || e2.levelSet(res.point1) <= 0 ||
-                        e1.levelSet(e2.centre()) <= 0 || e2.levelSet(e1.centre()) <= 0;
-    res.distance = cur->L;
-    res.lower = cur->L - allow;
-    if (common) {
-      res.upper = 0;
-    } else if (JiaOverlapTest().test(e1, e2) != OverlapStatus::separated) {
-      res.upper = allow;  // touching or overlapping by the exact test
-    } else {
-      res.status = DistanceStatus::failed;  // a spurious local maximum of L
-      res.upper = (res.point2 - res.point1).norm() + allow;
-    }
-    if (res.status == DistanceStatus::overlapping && res.upper < res.lower) res.upper = res.lower;
-    return res;
-  }
-  res.distance = std::sqrt(dot(cur->v, cur->v));
-  res.lower = cur->L - allow;
-  // rounding of the absolute points: |p| <= |p|_1 (no square root)
-  res.upper = res.distance + allow +
-              4 * kEps * (res.point1.cwiseAbs().sum() + res.point2.cwiseAbs().sum());
-  return res;
 }
 
 }  // namespace ellipsoids

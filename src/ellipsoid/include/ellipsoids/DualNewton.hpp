@@ -29,6 +29,13 @@
 
 namespace ellipsoids {
 
+/// One query of a batch: the two bodies, and optionally a warm-start direction.
+struct DistancePair {
+  const Ellipsoid* e1;
+  const Ellipsoid* e2;
+  const Vec3* initialDirection = nullptr;  ///< unit direction from body 1 to body 2, or none
+};
+
 class DualNewton : public DistanceMethod {
  public:
   static constexpr int kDefaultMaxIterations = 100;
@@ -37,6 +44,16 @@ class DualNewton : public DistanceMethod {
   bool isSigned() const override { return true; }
   DistanceResult distance(const Ellipsoid& e1, const Ellipsoid& e2,
                           const DistanceOptions& options) const override;
+
+  /**
+   * Batch API: results[i] = distance(*pairs[i].e1, *pairs[i].e2, options)
+   * (with pairs[i].initialDirection as warm start when given), the same
+   * answers as one at a time, computed with several queries in flight to use
+   * the core's parallelism (the gain is measured in docs/benchmarks.md).
+   * No allocation. results must hold count entries.
+   */
+  void distances(const DistancePair* pairs, std::size_t count, const DistanceOptions& options,
+                 DistanceResult* results) const;
 };
 
 }  // namespace ellipsoids

@@ -13,6 +13,16 @@
 #include <cmath>
 #include <limits>
 
+// The layout of Eigen's fixed-size types depends on the instruction set it is
+// compiled for (AVX aligns them to 32 bytes, SSE to 16) unless their alignment
+// is capped. The core is compiled for the native CPU while OpenFOAM code that
+// uses it is not: every translation unit that sees these types must agree, so
+// the cap is part of the interface (set by CMake for its targets and by
+// etc/wmake/options for OpenFOAM code).
+#if !defined(EIGEN_MAX_ALIGN_BYTES) || EIGEN_MAX_ALIGN_BYTES != 16
+#error "Compile with -DEIGEN_MAX_ALIGN_BYTES=16 (see ellipsoids/Types.hpp): the geometry core's types must have one layout"
+#endif
+
 namespace ellipsoids {
 
 using Scalar = double;

@@ -3,8 +3,6 @@
 #include "ellipsoids/CertifiedBracket.hpp"
 #include "ellipsoids/OverlapTest.hpp"
 
-#include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <cmath>
 #include <new>
@@ -278,8 +276,13 @@ GeneralStep generalStep(const PairSetup& p, DualPoint*& cur, DualPoint*& trial) 
   if (lambdaMin < 0 && G.norm() <= 64 * p.roundingL) {
     // a saddle of L (e.g. a symmetric start): leave along the direction of
     // negative curvature of H, where L increases
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix<Scalar, 2, 2>> es(H);
-    const Vec3 escape = es.eigenvectors()(0, 0) * t1 + es.eigenvectors()(1, 0) * t2;
+    // eigenvector of the smallest eigenvalue of the symmetric 2x2 H
+    const Scalar a = H(0, 0), b = H(0, 1), c = H(1, 1);
+    const Scalar lam = Scalar(0.5) * (a + c) - std::hypot(Scalar(0.5) * (a - c), b);
+    const Eigen::Matrix<Scalar, 2, 1> u1(b, lam - a), u2(lam - c, b);
+    const Eigen::Matrix<Scalar, 2, 1> u = u1.squaredNorm() >= u2.squaredNorm() ? u1 : u2;
+    const Scalar un = u.norm();
+    const Vec3 escape = un > 0 ? Vec3((u[0] * t1 + u[1] * t2) / un) : t1;
     for (Scalar t = 1; t > 1e-6; t *= Scalar(0.5)) {
       for (Scalar sign : {1.0, -1.0}) {
         trial->evaluate(p.P1, p.P2, p.dr, Vec3((curN + sign * t * escape).normalized()));

@@ -44,6 +44,21 @@ TEST(AutoDistance, DefaultTablePicksPerItsRows) {
   }
 }
 
+TEST(AutoDistance, DefaultPicksTheMeasuredFastestMethodOnTheBenchmarkGrid) {
+  // docs/benchmarks.md: the dual method was fastest in every (Ar, eps_d) cell
+  const AutoDistance a;
+  for (Scalar ar1 : {1.0 / 6, 1.0 / 3, 2.0 / 3, 1.5, 3.0, 6.0}) {
+    for (Scalar ar2 : {1.0 / 6, 1.0, 6.0}) {
+      for (Scalar relEps = 1e-3; relEps > 0.9e-8; relEps /= 10) {
+        const Ellipsoid e1 = Ellipsoid::spheroid(ar1, 0.7, Vec3::Zero(), Quat::Identity());
+        const Ellipsoid e2 = Ellipsoid::spheroid(ar2, 1.3, Vec3(5, 0, 0), Quat::Identity());
+        const Scalar epsD = relEps * std::min(e1.equivalentRadius(), e2.equivalentRadius());
+        EXPECT_EQ(a.choose(e1, e2, epsD).name(), "dual") << ar1 << " " << ar2 << " " << relEps;
+      }
+    }
+  }
+}
+
 TEST(AutoDistance, FallsBackWhenTheChosenMethodFails) {
   // a table that always picks Jain et al. with a tiny step: it cannot converge
   // in the iteration limit; auto still returns a certified answer

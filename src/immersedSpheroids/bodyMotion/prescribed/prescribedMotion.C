@@ -1,0 +1,99 @@
+/*---------------------------------------------------------------------------*\
+  spheroidFoam: particle-resolved flows of immersed spheroids for OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later (as OpenFOAM).
+\*---------------------------------------------------------------------------*/
+
+#include "prescribedMotion.H"
+#include "dictionaryChecks.H"
+#include "Constant.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace bodyMotions
+{
+    defineTypeNameAndDebug(prescribed, 0);
+    addToRunTimeSelectionTable(bodyMotion, prescribed, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * //
+
+namespace
+{
+
+Foam::autoPtr<Foam::Function1<Foam::vector>> readFunction
+(
+    const Foam::dictionary& dict,
+    const Foam::word& name
+)
+{
+    using namespace Foam;
+    if (!dict.found(name))
+    {
+        return autoPtr<Function1<vector>>
+        (
+            new Function1Types::Constant<vector>(name, vector::zero)
+        );
+    }
+    return Function1<vector>::New(name, dict);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::bodyMotions::prescribed::prescribed(const word& type, const dictionary& dict)
+:
+    bodyMotion(type),
+    velocity_(readFunction(dict, "velocity")),
+    angularVelocity_(readFunction(dict, "angularVelocity"))
+{
+    immersedSpheroids::checkKeywords
+    (
+        dict,
+        wordList
+        ({
+            "type", "velocity", "velocityCoeffs",
+            "angularVelocity", "angularVelocityCoeffs"
+        })
+    );
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::bodyMotions::prescribed::initialise(bodyState& state, const scalar t) const
+{
+    state.velocity = velocity_->value(t);
+    state.angularVelocity = angularVelocity_->value(t);
+}
+
+
+void Foam::bodyMotions::prescribed::advance
+(
+    bodyState& state,
+    const scalar t,
+    const scalar dt,
+    const vector&,
+    const vector&,
+    const scalar,
+    const vector&
+) const
+{
+    state.centre += velocity_->integrate(t, t + dt);
+    const vector omegaMid = angularVelocity_->value(t + 0.5*dt);
+    state.orientation = rotationQuaternion(dt*omegaMid)*state.orientation;
+    state.orientation.normalize();
+    state.velocity = velocity_->value(t + dt);
+    state.angularVelocity = angularVelocity_->value(t + dt);
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,373 @@
+/*---------------------------------------------------------------------------*\
+  spheroidFoam: particle-resolved flows of immersed spheroids for OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later (as OpenFOAM).
+\*---------------------------------------------------------------------------*/
+
+#include "immersedBodies.H"
+#include "cellSolidFraction.H"
+#include "dictionaryChecks.H"
+#include "packingBodies.H"
+#include "uniformDimensionedFields.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(immersedBodies, 0);
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::immersedBodies::readBodies()
+{
+    using namespace immersedSpheroids;
+
+    const bool hasBodies = properties_.found("bodies");
+    const bool hasPacking = properties_.found("packing");
+    if (!hasBodies && !hasPacking)
+    {
+        entryError
+        (
+            properties_, "bodies",
+            "is missing: give a bodies { name { ... } ... } dictionary"
+            " and/or a packing { file ...; } dictionary"
+        );
+    }
+
+    if (hasBodies)
+    {
+        if (!properties_.isDict("bodies"))
+        {
+            entryError
+            (
+                properties_, "bodies",
+                "must be a dictionary of bodies: bodies { name { semiAxes ...; } }"
+            );
+        }
+        const dictionary& bodiesDict = properties_.subDict("bodies");
+        for (const entry& e : bodiesDict)
+        {
+            if (!e.isDict())
+            {
+                entryError
+                (
+                    bodiesDict, e.keyword(),
+                    "must be a body dictionary { semiAxes ...; density ...;"
+                    " centre ...; motion { type ...; } }"
+                );
+            }
+            bodies_.append(new immersedBody(e.keyword(), e.dict()));
+        }
+    }
+
+    if (hasPacking)
+    {
+        if (!properties_.isDict("packing"))
+        {
+            entryError
+            (
+                properties_, "packing",
+                "must be a dictionary: packing { file ...; density ...;"
+                " motion { type ...; } }"
+            );
+        }
+        readPackingBodies(properties_.subDict("packing"), mesh_.time(), bodies_);
+    }
+
+    if (bodies_.empty())
+    {
+        entryError(properties_, "bodies", "lists no body");
+    }
+
+    // unique names (the time series and the restart state are keyed by them)
+    wordHashSet names;
+    for (const immersedBody& body : bodies_)
+    {
+        if (!names.insert(body.name()))
+        {
+            entryError
+            (
+                properties_, "bodies",
+                "has two bodies named '" + body.name() + "'"
+            );
+        }
+    }
+}
+
+
+void Foam::immersedBodies::readGravity()
+{
+    g_ = Zero;
+    bool needed = false;
+    for (const immersedBody& body : bodies_)
+    {
+        needed = needed || body.motion().isFreeInTranslation();
+    }
+    if (!needed)
+    {
+        return;
+    }
+
+    IOobject gIO
+    (
+        "g",
+        mesh_.time().constant(),
+        mesh_,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE
+    );
+    if (!gIO.typeHeaderOk<uniformDimensionedVectorField>(true))
+    {
+        FatalErrorInFunction
+            << "A body is free in translation, which needs gravity: the file "
+            << gIO.objectPath() << " (uniformDimensionedVectorField g, e.g."
+            << " value (0 0 -9.81);) is missing" << nl
+            << exit(FatalError);
+    }
+    const uniformDimensionedVectorField g(gIO);
+    if (g.dimensions() != dimAcceleration)
+    {
+        FatalIOErrorInFunction(gIO.objectPath())
+            << "Entry 'dimensions' of " << gIO.objectPath()
+            << " must be those of an acceleration " << dimAcceleration
+            << ", not " << g.dimensions() << nl
+            << exit(FatalIOError);
+    }
+    g_ = g.value();
+}
+
+
+bool Foam::immersedBodies::readRestartState()
+{
+    if (!headerOk())
+    {
+        return false;
+    }
+
+    const dictionary dict(readStream(typeName));
+    close();
+
+    using namespace immersedSpheroids;
+    eta_ = readCheckedOrDefault<scalar>(dict, "eta", 0, "the penalty time scale [s]");
+    lastDeltaT_ = readCheckedOrDefault<scalar>
+    (
+        dict, "deltaT", 0, "the time step of the last update [s]"
+    );
+    const FixedList<scalar, 3> ddt = readCheckedOrDefault<FixedList<scalar, 3>>
+    (
+        dict, "ddtCoefficients", FixedList<scalar, 3>({1, 1, 0}),
+        "(c c0 c00), the ddt coefficients of the last solve"
+    );
+    solveDdt_.c = ddt[0];
+    solveDdt_.c0 = ddt[1];
+    solveDdt_.c00 = ddt[2];
+    if (!dict.isDict("bodies"))
+    {
+        entryError(dict, "bodies", "is missing (restart state of each body)");
+    }
+    const dictionary& states = dict.subDict("bodies");
+    for (immersedBody& body : bodies_)
+    {
+        if (!states.isDict(body.name()))
+        {
+            entryError
+            (
+                states, body.name(),
+                "is missing: the restart state has no body of this name"
+                " (bodies may not be added or renamed on restart)"
+            );
+        }
+        body.readState(states.subDict(body.name()));
+    }
+    return true;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
+:
+    regIOobject
+    (
+        IOobject
+        (
+            typeName,
+            mesh.time().timeName(),
+            "uniform",
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        )
+    ),
+    mesh_(mesh),
+    properties_
+    (
+        IOobject
+        (
+            "immersedBodiesProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    ),
+    fluidDensity_(0),
+    UName_("U"),
+    penaltyRatio_(1e-3),
+    subSteps_(1),
+    g_(Zero),
+    cellRadius_(immersedSpheroids::cellRadii(mesh)),
+    updateIndex_(-1),
+    eta_(0),
+    lastDeltaT_(0),
+    ddtScheme_(immersedSpheroids::ddtCoefficients::scheme::Euler),
+    solveDdt_(),
+    cellsFound_(false),
+    cellSlot_(mesh.nCells(), -1)
+{
+    using namespace immersedSpheroids;
+
+    checkKeywords
+    (
+        properties_,
+        wordList
+        ({
+            "fluidDensity", "U", "penaltyRatio", "subSteps", "bodies",
+            "packing", "output"
+        })
+    );
+    fluidDensity_ = readPositive
+    (
+        properties_, "fluidDensity", "the fluid density rho_f [kg/m^3], > 0"
+    );
+    UName_ = readCheckedOrDefault<word>
+    (
+        properties_, "U", "U", "the name of the velocity field"
+    );
+    penaltyRatio_ = readCheckedOrDefault<scalar>
+    (
+        properties_, "penaltyRatio", 1e-3,
+        "eta/deltaT, the penalty time scale over the time step, in (0, 1]"
+    );
+    if (penaltyRatio_ <= 0 || penaltyRatio_ > 1)
+    {
+        entryError
+        (
+            properties_, "penaltyRatio",
+            "must be in (0, 1] (eta/deltaT; 1e-3 is the default), got "
+          + Foam::name(penaltyRatio_)
+        );
+    }
+    subSteps_ = readCheckedOrDefault<label>
+    (
+        properties_, "subSteps", 1, "the number of body sub-steps per time step, >= 1"
+    );
+    if (subSteps_ < 1 || subSteps_ > 100000)
+    {
+        entryError
+        (
+            properties_, "subSteps",
+            "must be an integer in [1, 100000], got " + Foam::name(subSteps_)
+        );
+    }
+
+    readBodies();
+    readGravity();
+    ddtScheme_ = immersedSpheroids::ddtCoefficients::read(mesh, UName_);
+
+    if (!readRestartState())
+    {
+        const scalar t = mesh.time().value();
+        for (immersedBody& body : bodies_)
+        {
+            body.motion().initialise(body.state(), t);
+        }
+    }
+
+    bodySlots_.setSize(bodies_.size());
+
+    output_.reset
+    (
+        new immersedBodiesOutput
+        (
+            *this,
+            properties_.subOrEmptyDict("output")
+        )
+    );
+
+    Info<< "immersedBodies: " << bodies_.size() << " bodies, rho_f "
+        << fluidDensity_ << ", eta = " << penaltyRatio_ << " deltaT, "
+        << subSteps_ << " sub-step(s) per step";
+    if (mag(g_) > 0)
+    {
+        Info<< ", g " << g_;
+    }
+    Info<< endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
+
+Foam::immersedBodies& Foam::immersedBodies::New(const fvMesh& mesh)
+{
+    immersedBodies* ptr = mesh.getObjectPtr<immersedBodies>(typeName);
+    if (!ptr)
+    {
+        ptr = new immersedBodies(mesh);
+        regIOobject::store(ptr);
+    }
+    return *ptr;
+}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * //
+
+Foam::immersedBodies::~immersedBodies()
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::immersedBodies::update(const volVectorField& U)
+{
+    const Time& time = mesh_.time();
+    if (time.timeIndex() == updateIndex_)
+    {
+        return;
+    }
+
+    const scalar dt = time.deltaTValue();
+    const scalar t0 = time.value() - dt;
+
+    if (updateIndex_ < 0)
+    {
+        // first update of this run: the cells and the penalty of the solve
+        // that produced U (none at the start of a fresh run: eta_ = 0)
+        updateCells();
+        assemblePenalty(eta_, lastDeltaT_, solveDdt_.c);
+        output_->start(t0);
+    }
+
+    computeForces(U);
+    advanceBodies(t0, dt);
+    updateCells();
+
+    const immersedSpheroids::ddtCoefficients ddt =
+        immersedSpheroids::ddtCoefficients::of
+        (
+            ddtScheme_, time.timeIndex(), dt, time.deltaT0Value()
+        );
+    assemblePenalty(penaltyRatio_*dt, dt, ddt.c);
+    solveDdt_ = ddt;
+    lastDeltaT_ = dt;
+    updateIndex_ = time.timeIndex();
+
+    output_->append(time.value());
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,56 @@
+/*---------------------------------------------------------------------------*\
+  spheroidFoam: particle-resolved flows of immersed spheroids for OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later (as OpenFOAM).
+\*---------------------------------------------------------------------------*/
+
+#include "immersedBodies.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::immersedBodies::writeData(Ostream& os) const
+{
+    // the restart state round-trips exactly: 17 significant digits
+    const int oldPrecision = os.precision(17);
+
+    os.writeEntry("eta", eta_);
+    os.writeEntry("deltaT", lastDeltaT_);
+    os.writeEntry
+    (
+        "ddtCoefficients",
+        FixedList<scalar, 3>({solveDdt_.c, solveDdt_.c0, solveDdt_.c00})
+    );
+    os.beginBlock("bodies");
+    for (const immersedBody& body : bodies_)
+    {
+        os.beginBlock(body.name());
+        body.writeState(os);
+        os.endBlock();
+    }
+    os.endBlock();
+
+    os.precision(oldPrecision);
+    return os.good();
+}
+
+
+bool Foam::immersedBodies::writeObject
+(
+    IOstream::streamFormat,
+    IOstream::versionNumber ver,
+    IOstream::compressionType,
+    const bool valid
+) const
+{
+    output_->write();
+
+    // always ASCII, uncompressed: small, readable, exact at 17 digits
+    return regIOobject::writeObject
+    (
+        IOstream::ASCII, ver, IOstream::UNCOMPRESSED, valid
+    );
+}
+
+
+// ************************************************************************* //

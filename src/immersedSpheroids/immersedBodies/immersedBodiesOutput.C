@@ -1,0 +1,231 @@
+/*---------------------------------------------------------------------------*\
+  spheroidFoam: particle-resolved flows of immersed spheroids for OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later (as OpenFOAM).
+\*---------------------------------------------------------------------------*/
+
+#include "immersedBodiesOutput.H"
+#include "immersedBodies.H"
+#include "dictionaryChecks.H"
+
+#include "bodyOutput/bodyOutput.hpp"
+
+#include <stdexcept>
+
+// * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+std::array<double, 3> toArray(const vector& v)
+{
+    return {v.x(), v.y(), v.z()};
+}
+
+std::array<double, 4> toArray(const quaternion& q)
+{
+    return {q.w(), q.v().x(), q.v().y(), q.v().z()};
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::immersedBodiesOutput::writeSurfaces(const scalar t) const
+{
+    if (!series_)
+    {
+        return;
+    }
+
+    std::vector<bodyoutput::BodyShape> shapes;
+    shapes.reserve(bodies_.bodies().size());
+    for (const immersedBody& body : bodies_.bodies())
+    {
+        bodyoutput::BodyShape s;
+        s.semiAxes = toArray(body.semiAxes());
+        s.centre = toArray(body.state().centre);
+        s.orientation = toArray(body.state().orientation);
+        shapes.push_back(s);
+    }
+
+    const word name("surfaces_" + bodies_.mesh().time().timeName() + ".vtk");
+    const fileName surfacesDir(dir_/"surfaces");
+    try
+    {
+        bodyoutput::writeSurfacesVtk(surfacesDir/name, shapes, surfaceSubdivisions_);
+        series_->add("surfaces"/name, t);
+    }
+    catch (const std::exception& err)
+    {
+        FatalErrorInFunction
+            << "Cannot write the body surfaces " << surfacesDir/name << ": "
+            << err.what() << nl << exit(FatalError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::immersedBodiesOutput::immersedBodiesOutput
+(
+    const immersedBodies& bodies,
+    const dictionary& dict
+)
+:
+    bodies_(bodies),
+    timeSeries_(true),
+    surfaces_(true),
+    surfaceSubdivisions_(3),
+    solidFraction_(false),
+    dir_(bodies.mesh().time().globalPath()/"postProcessing"/"immersedBodies")
+{
+    using namespace immersedSpheroids;
+
+    checkKeywords
+    (
+        dict,
+        wordList({"timeSeries", "surfaces", "surfaceSubdivisions", "solidFraction"})
+    );
+    const string yesNo("yes or no (a switch)");
+    timeSeries_ = readCheckedOrDefault<Switch>(dict, "timeSeries", true, yesNo);
+    surfaces_ = readCheckedOrDefault<Switch>(dict, "surfaces", true, yesNo);
+    solidFraction_ = readCheckedOrDefault<Switch>(dict, "solidFraction", false, yesNo);
+    surfaceSubdivisions_ = readCheckedOrDefault<label>
+    (
+        dict, "surfaceSubdivisions", 3,
+        "the subdivisions of the icosahedron triangulating each surface"
+        " (20 x 4^s triangles), an integer in [0, 8]"
+    );
+    if
+    (
+        surfaceSubdivisions_ < 0
+     || surfaceSubdivisions_ > bodyoutput::kMaxSurfaceSubdivisions
+    )
+    {
+        entryError
+        (
+            dict, "surfaceSubdivisions",
+            "must be an integer in [0, 8], got " + Foam::name(surfaceSubdivisions_)
+        );
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * //
+
+Foam::immersedBodiesOutput::~immersedBodiesOutput()
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::immersedBodiesOutput::start(const scalar t0)
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+
+    // rows after the start time belong to a later part of an earlier run
+    // (this run replaces them); the start row itself is written again
+    const scalar restartTime = t0 - 0.5*bodies_.mesh().time().deltaTValue();
+
+    if (timeSeries_)
+    {
+        std::vector<bodyoutput::BodyInfo> infos;
+        for (const immersedBody& body : bodies_.bodies())
+        {
+            bodyoutput::BodyInfo info;
+            info.name = body.name();
+            info.semiAxes = toArray(body.semiAxes());
+            info.density = body.density();
+            infos.push_back(info);
+        }
+        const fileName file(dir_/"bodies.h5");
+        try
+        {
+            writer_.reset(new bodyoutput::TimeSeriesWriter(file, infos, restartTime));
+        }
+        catch (const std::exception& err)
+        {
+            FatalErrorInFunction
+                << "Cannot open the time series of the bodies " << file
+                << ": " << err.what() << nl << exit(FatalError);
+        }
+        append(t0);
+    }
+
+    if (surfaces_)
+    {
+        const fileName file(dir_/"surfaces.vtk.series");
+        try
+        {
+            series_.reset(new bodyoutput::VtkSeries(file, restartTime));
+        }
+        catch (const std::exception& err)
+        {
+            FatalErrorInFunction
+                << "Cannot read the series of surfaces " << file << ": "
+                << err.what() << nl << exit(FatalError);
+        }
+        writeSurfaces(t0);
+    }
+}
+
+
+void Foam::immersedBodiesOutput::append(const scalar t)
+{
+    if (!writer_)
+    {
+        return;
+    }
+
+    std::vector<bodyoutput::BodyRecord> records;
+    records.reserve(bodies_.bodies().size());
+    for (const immersedBody& body : bodies_.bodies())
+    {
+        const bodyState& s = body.state();
+        bodyoutput::BodyRecord r;
+        r.centre = toArray(s.centre);
+        r.velocity = toArray(s.velocity);
+        r.angularVelocity = toArray(s.angularVelocity);
+        r.orientation = toArray(s.orientation);
+        r.hydroForce = toArray(body.hydroForce());
+        r.hydroTorque = toArray(body.hydroTorque());
+        r.collisionForce = toArray(body.collisionForce());
+        r.collisionTorque = toArray(body.collisionTorque());
+        records.push_back(r);
+    }
+    try
+    {
+        writer_->append(t, records);
+    }
+    catch (const std::exception& err)
+    {
+        FatalErrorInFunction
+            << "Cannot append to the time series of the bodies "
+            << writer_->path() << ": " << err.what() << nl << exit(FatalError);
+    }
+}
+
+
+void Foam::immersedBodiesOutput::write() const
+{
+    const Time& time = bodies_.mesh().time();
+    if (Pstream::master() && series_)
+    {
+        writeSurfaces(time.value());
+    }
+    if (solidFraction_)
+    {
+        bodies_.solidFraction()().write();
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,305 @@
+/*---------------------------------------------------------------------------*\
+  spheroidFoam: particle-resolved flows of immersed spheroids for OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later (as OpenFOAM).
+\*---------------------------------------------------------------------------*/
+
+#include "immersedBody.H"
+#include "cellSolidFraction.H"
+#include "dictionaryChecks.H"
+#include "treeDataCell.H"
+#include "indexedOctree.H"
+#include "mathematicalConstants.H"
+#include "diagTensor.H"
+
+// * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- The rotation taking the x axis to the direction d (shortest arc)
+quaternion axisToQuaternion(const vector& d)
+{
+    const vector ex(1, 0, 0);
+    const vector n = d/mag(d);
+    const scalar c = ex & n;
+    if (c < -1 + 1e-12)
+    {
+        // antiparallel: half a turn about z
+        return quaternion(0, vector(0, 0, 1));
+    }
+    // q = (1 + c, ex ^ n) normalised: half the angle between ex and n
+    quaternion q(1 + c, ex ^ n);
+    q.normalize();
+    return q;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::immersedBody::immersedBody(const word& name, const dictionary& dict)
+:
+    name_(name),
+    semiAxes_(Zero),
+    density_(0)
+{
+    using namespace immersedSpheroids;
+
+    checkKeywords
+    (
+        dict,
+        wordList
+        ({
+            "semiAxes", "density", "centre", "orientation", "axis",
+            "velocity", "angularVelocity", "motion"
+        })
+    );
+
+    semiAxes_ = readChecked<vector>
+    (
+        dict, "semiAxes", "the semi-axes (a b c) along the body x, y, z axes [m], each > 0"
+    );
+    if (cmptMin(semiAxes_) <= 0)
+    {
+        entryError
+        (
+            dict, "semiAxes",
+            "every semi-axis must be > 0 (got " + Foam::name(semiAxes_) + ")"
+        );
+    }
+    density_ = readPositive(dict, "density", "the body density [kg/m^3], > 0");
+
+    state_.centre = readChecked<point>(dict, "centre", "the centre (x y z) [m]");
+
+    if (dict.found("orientation") && dict.found("axis"))
+    {
+        entryError
+        (
+            dict, "axis",
+            "give either orientation (a unit quaternion (w x y z)) or axis"
+            " (the direction of the body x axis), not both"
+        );
+    }
+    if (dict.found("orientation"))
+    {
+        const FixedList<scalar, 4> q = readChecked<FixedList<scalar, 4>>
+        (
+            dict, "orientation", "a unit quaternion (w x y z), body to world"
+        );
+        const scalar norm =
+            Foam::sqrt(sqr(q[0]) + sqr(q[1]) + sqr(q[2]) + sqr(q[3]));
+        if (mag(norm - 1) > 1e-6)
+        {
+            entryError
+            (
+                dict, "orientation",
+                "a unit quaternion (w x y z) is required (|q| = "
+              + Foam::name(norm) + ")"
+            );
+        }
+        state_.orientation = listToQuaternion(q);
+        state_.orientation.normalize();
+    }
+    else if (dict.found("axis"))
+    {
+        const vector d = readChecked<vector>
+        (
+            dict, "axis", "the direction (x y z) of the body x axis, non-zero"
+        );
+        if (mag(d) < VSMALL)
+        {
+            entryError(dict, "axis", "the axis direction must be non-zero");
+        }
+        state_.orientation = axisToQuaternion(d);
+    }
+
+    state_.velocity = readCheckedOrDefault<vector>
+    (
+        dict, "velocity", Zero, "the initial velocity (x y z) [m/s]"
+    );
+    state_.angularVelocity = readCheckedOrDefault<vector>
+    (
+        dict, "angularVelocity", Zero,
+        "the initial angular velocity (x y z), world frame [rad/s]"
+    );
+
+    if (!dict.isDict("motion"))
+    {
+        entryError
+        (
+            dict, "motion",
+            "a motion sub-dictionary { type <fixed|prescribed|free|"
+            "freeTranslation|freeRotation>; } is required"
+        );
+    }
+    motion_ = bodyMotion::New(dict.subDict("motion"));
+}
+
+
+Foam::immersedBody::immersedBody
+(
+    const word& name,
+    const vector& semiAxes,
+    const scalar density,
+    const bodyState& state,
+    const dictionary& motionDict
+)
+:
+    name_(name),
+    semiAxes_(semiAxes),
+    density_(density),
+    motion_(bodyMotion::New(motionDict)),
+    state_(state)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::immersedBody::volume() const
+{
+    return
+        4.0/3.0*constant::mathematical::pi
+       *semiAxes_.x()*semiAxes_.y()*semiAxes_.z();
+}
+
+
+Foam::scalar Foam::immersedBody::mass() const
+{
+    return density_*volume();
+}
+
+
+Foam::vector Foam::immersedBody::bodyInertia() const
+{
+    const scalar m5 = mass()/5;
+    const scalar a2 = sqr(semiAxes_.x());
+    const scalar b2 = sqr(semiAxes_.y());
+    const scalar c2 = sqr(semiAxes_.z());
+    return vector(m5*(b2 + c2), m5*(a2 + c2), m5*(a2 + b2));
+}
+
+
+Foam::symmTensor Foam::immersedBody::quadraticForm() const
+{
+    const tensor R = state_.R();
+    const diagTensor D
+    (
+        1/sqr(semiAxes_.x()), 1/sqr(semiAxes_.y()), 1/sqr(semiAxes_.z())
+    );
+    return symm(R & D & R.T());
+}
+
+
+Foam::boundBox Foam::immersedBody::bounds() const
+{
+    // support function of the ellipsoid along e_i: sqrt(e_i^T P e_i),
+    // P = R diag(a^2, b^2, c^2) R^T
+    const tensor R = state_.R();
+    const diagTensor D(sqr(semiAxes_.x()), sqr(semiAxes_.y()), sqr(semiAxes_.z()));
+    const tensor P = R & D & R.T();
+    const vector h(Foam::sqrt(P.xx()), Foam::sqrt(P.yy()), Foam::sqrt(P.zz()));
+    return boundBox(state_.centre - h, state_.centre + h);
+}
+
+
+void Foam::immersedBody::updateCells
+(
+    const polyMesh& mesh,
+    const scalarField& cellRadius
+)
+{
+    cells_.clear();
+    fractions_.clear();
+
+    const boundBox bb = bounds();
+    if (!bb.overlaps(mesh.bounds()))
+    {
+        return;
+    }
+
+    const symmTensor A = quadraticForm();
+    const scalar lipschitz = 1/minSemiAxis();
+    const pointField& C = mesh.cellCentres();
+
+    const labelList candidates = mesh.cellTree().findBox(treeBoundBox(bb));
+    for (const label celli : candidates)
+    {
+        // |psi(x) - psi(C)| <= |x - C|/a_min: far cells need no clipping
+        const scalar psi = levelSet(C[celli], state_.centre, A);
+        const scalar reach = lipschitz*cellRadius[celli];
+        scalar alpha;
+        if (psi >= reach)
+        {
+            continue;
+        }
+        else if (psi <= -reach)
+        {
+            alpha = 1;
+        }
+        else
+        {
+            alpha = immersedSpheroids::cellSolidFraction
+            (
+                mesh, celli, state_.centre, A
+            );
+            if (alpha <= 0)
+            {
+                continue;
+            }
+        }
+        cells_.append(celli);
+        fractions_.append(alpha);
+    }
+}
+
+
+void Foam::immersedBody::writeState(Ostream& os) const
+{
+    state_.write(os);
+    os.writeEntry("hydroForce", hydroForce_);
+    os.writeEntry("hydroTorque", hydroTorque_);
+    os.writeEntry("collisionForce", collisionForce_);
+    os.writeEntry("collisionTorque", collisionTorque_);
+    os.writeEntry("nFluidMomenta", nFluidMomenta_);
+    os.writeEntry("fluidMomentum", fluidMomentum_);
+    os.writeEntry("fluidAngularMomentum", fluidAngularMomentum_);
+    os.writeEntry("fluidMomentum0", fluidMomentum0_);
+    os.writeEntry("fluidAngularMomentum0", fluidAngularMomentum0_);
+}
+
+
+void Foam::immersedBody::readState(const dictionary& dict)
+{
+    using namespace immersedSpheroids;
+
+    const string vec("a vector (x y z)");
+    state_.centre = readChecked<point>(dict, "centre", vec);
+    state_.velocity = readChecked<vector>(dict, "velocity", vec);
+    state_.orientation = listToQuaternion
+    (
+        readChecked<FixedList<scalar, 4>>(dict, "orientation", "a quaternion (w x y z)")
+    );
+    state_.angularVelocity = readChecked<vector>(dict, "angularVelocity", vec);
+    hydroForce_ = readCheckedOrDefault<vector>(dict, "hydroForce", Zero, vec);
+    hydroTorque_ = readCheckedOrDefault<vector>(dict, "hydroTorque", Zero, vec);
+    collisionForce_ = readCheckedOrDefault<vector>(dict, "collisionForce", Zero, vec);
+    collisionTorque_ = readCheckedOrDefault<vector>(dict, "collisionTorque", Zero, vec);
+    nFluidMomenta_ = readCheckedOrDefault<label>
+    (
+        dict, "nFluidMomenta", 0, "0, 1 or 2 (internal-fluid momenta known)"
+    );
+    fluidMomentum_ = readCheckedOrDefault<vector>(dict, "fluidMomentum", Zero, vec);
+    fluidAngularMomentum_ =
+        readCheckedOrDefault<vector>(dict, "fluidAngularMomentum", Zero, vec);
+    fluidMomentum0_ = readCheckedOrDefault<vector>(dict, "fluidMomentum0", Zero, vec);
+    fluidAngularMomentum0_ =
+        readCheckedOrDefault<vector>(dict, "fluidAngularMomentum0", Zero, vec);
+}
+
+
+// ************************************************************************* //

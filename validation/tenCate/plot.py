@@ -1,0 +1,108 @@
+"""ten Cate et al. (2002) settling sphere: simulated gap and velocity against the digitised
+experimental curves, and the u_max error of every finished run.
+
+    /usr/bin/python3 validation/tenCate/plot.py validation/tenCate      (Allrun -plot does this)
+
+Reads results/<CASE>-<CPD>.h5 (+ .csv: cells, ranks, wall time, steps) and the reference curves
+in ../shared/validation-data/tenCate2002 (or $TENCATE_DATA). Writes results/summary.md,
+results/summary.csv, tenCate_E1.png, tenCate_E4.png.
+"""
+import csv
+import glob
+import os
+import sys
+
+import h5py
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+here = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(__file__))
+data_dir = os.environ.get("TENCATE_DATA",
+                          os.path.join(here, "..", "..", "..", "shared", "validation-data", "tenCate2002"))
+D = 0.015
+Z0 = 0.1275          # initial centre height: bottom 120 mm above the floor
+REFERENCE = {        # u_max (m/s), physics-references.md section 1; data files
+    "E1": (0.035986, "Re1_5"),
+    "E4": (0.12224, "Re32_2"),
+}
+
+
+def load_reference(name):
+    tag = REFERENCE[name][1]
+    gap = np.loadtxt(os.path.join(data_dir, f"tencate_gap_{tag}.csv"), delimiter=",")
+    u = np.loadtxt(os.path.join(data_dir, f"tencate_u_{tag}.csv"), delimiter=",")
+    return gap, u
+
+
+def load_run(path):
+    with h5py.File(path, "r", locking=False) as f:
+        t = np.asarray(f["time"][:], dtype=float)
+        z = np.asarray(f["centre"][:, 0, 2], dtype=float)
+        w = np.asarray(f["velocity"][:, 0, 2], dtype=float)
+    info = {}
+    csv_path = path[:-3] + ".csv"
+    if os.path.exists(csv_path):
+        with open(csv_path) as c:
+            info = next(csv.DictReader(c))
+    return t, z, w, info
+
+
+def main():
+    runs = sorted(glob.glob(os.path.join(here, "results", "E*-*.h5")))
+    if not runs:
+        sys.exit(f"plot.py: no results in {here}/results (run Allrun E4 8 first)")
+    rows = []
+    figs = {}
+    for path in runs:
+        tag = os.path.basename(path)[:-3]
+        name, cpd = tag.split("-")
+        t, z, w, info = load_run(path)
+        gap_ref, u_ref = load_reference(name)
+        umax = -w.min()
+        uref = REFERENCE[name][0]
+        # velocity error over the data's time range (interpolated to the data's times)
+        inside = u_ref[:, 0] <= t[-1]
+        u_sim = np.interp(u_ref[inside, 0], t, w)
+        rms_u = np.sqrt(np.mean((u_sim - u_ref[inside, 1]) ** 2)) / uref
+        gap_sim = np.interp(gap_ref[:, 0], t, (z - D / 2) / D)
+        inside_g = gap_ref[:, 0] <= t[-1]
+        max_gap = np.max(np.abs(gap_sim[inside_g] - gap_ref[inside_g, 1]))
+        rows.append(dict(case=name, cpd=int(cpd), cells=info.get("cells", ""), ranks=info.get("ranks", ""),
+                         steps=info.get("steps", ""), wallSeconds=info.get("wallSeconds", ""),
+                         umax=umax, umaxRef=uref, umaxError=(umax - uref) / uref,
+                         rmsUError=rms_u, maxGapError=max_gap, endTime=t[-1]))
+        if name not in figs:
+            fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
+            ax[0].plot(gap_ref[:, 0], gap_ref[:, 1], "ko", ms=3, label="ten Cate et al. 2002")
+            ax[1].plot(u_ref[:, 0], u_ref[:, 1], "ko", ms=3, label="ten Cate et al. 2002")
+            figs[name] = (fig, ax)
+        fig, ax = figs[name]
+        ax[0].plot(t, (z - D / 2) / D, label=f"{cpd} cells/D")
+        ax[1].plot(t, w, label=f"{cpd} cells/D")
+    for name, (fig, ax) in figs.items():
+        ax[0].set_xlabel("t (s)"); ax[0].set_ylabel("gap / d")
+        ax[1].set_xlabel("t (s)"); ax[1].set_ylabel("u_z (m/s)")
+        ax[0].legend(); ax[1].legend()
+        fig.suptitle(f"ten Cate settling sphere, case {name}")
+        fig.tight_layout()
+        fig.savefig(os.path.join(here, f"tenCate_{name}.png"), dpi=110)
+    rows.sort(key=lambda r: (r["case"], r["cpd"]))
+    keys = list(rows[0].keys())
+    with open(os.path.join(here, "results", "summary.csv"), "w", newline="") as f:
+        wr = csv.DictWriter(f, keys)
+        wr.writeheader()
+        wr.writerows(rows)
+    with open(os.path.join(here, "results", "summary.md"), "w") as f:
+        f.write("| case | cells/D | cells | ranks | steps | wall (s) | u_max (m/s) | ref. | u_max error "
+                "| rms u error / u_max | max gap error / d |\n|---|---|---|---|---|---|---|---|---|---|---|\n")
+        for r in rows:
+            f.write(f"| {r['case']} | {r['cpd']} | {r['cells']} | {r['ranks']} | {r['steps']} | {r['wallSeconds']} "
+                    f"| {r['umax']:.5f} | {r['umaxRef']:.5f} | {100 * r['umaxError']:+.1f} % "
+                    f"| {100 * r['rmsUError']:.1f} % | {r['maxGapError']:.3f} |\n")
+    print(open(os.path.join(here, "results", "summary.md")).read())
+
+
+if __name__ == "__main__":
+    main()

@@ -219,6 +219,7 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     UName_("U"),
     penaltyRatio_(1e-3),
     subSteps_(1),
+    virtualMass_(0),
     g_(Zero),
     cellRadius_(immersedSpheroids::cellRadii(mesh)),
     updateIndex_(-1),
@@ -236,7 +237,7 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         properties_,
         wordList
         ({
-            "fluidDensity", "U", "penaltyRatio", "subSteps", "bodies",
+            "fluidDensity", "U", "penaltyRatio", "subSteps", "virtualMass", "bodies",
             "packing", "output"
         })
     );
@@ -275,6 +276,21 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         );
     }
 
+    virtualMass_ = readCheckedOrDefault<scalar>
+    (
+        properties_, "virtualMass", 0,
+        "the virtual-mass coefficient C_v of the stabilisation, in [0, 10] (0: off)"
+    );
+    if (virtualMass_ < 0 || virtualMass_ > 10)
+    {
+        entryError
+        (
+            properties_, "virtualMass",
+            "must be in [0, 10] (0: off; 0.5 for light bodies), got "
+          + Foam::name(virtualMass_)
+        );
+    }
+
     readBodies();
     readGravity();
     ddtScheme_ = immersedSpheroids::ddtCoefficients::read(mesh, UName_);
@@ -302,6 +318,10 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     Info<< "immersedBodies: " << bodies_.size() << " bodies, rho_f "
         << fluidDensity_ << ", eta = " << penaltyRatio_ << " deltaT, "
         << subSteps_ << " sub-step(s) per step";
+    if (virtualMass_ > 0)
+    {
+        Info<< ", virtual mass C_v " << virtualMass_;
+    }
     if (mag(g_) > 0)
     {
         Info<< ", g " << g_;

@@ -10,6 +10,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "immersedBodies.H"
+#include "freeMotion.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -137,15 +138,43 @@ void Foam::immersedBodies::advanceBodies(const scalar t0, const scalar dt)
               + body.collisionForce();
             const vector T = body.hydroTorque() + body.collisionTorque();
 
+            // virtual-mass stabilisation (Schwarz, Kempe and Froehlich
+            // 2015): C_v rho_f V (dU/dt) on both sides, implicit on the left
+            // (mass and inertia scaled by 1 + beta), explicit with the last
+            // sub-step's acceleration on the right
+            const scalar beta = virtualMass_*fluidDensity_/body.density();
+            const vector U0 = body.state().velocity;
+            const vector W0 = body.state().angularVelocity;
+            vector impulse = F*subDt;
+            vector angularImpulse = T*subDt;
+            if (beta > 0)
+            {
+                impulse += beta*body.mass()*body.acceleration()*subDt;
+                angularImpulse +=
+                    beta*subDt
+                   *(
+                        bodyMotions::worldInertia
+                        (
+                            body.state().orientation, body.bodyInertia()
+                        )
+                      & body.angularAcceleration()
+                    );
+            }
+
             body.motion().advance
             (
                 body.state(),
                 t,
                 subDt,
-                F*subDt,
-                T*subDt,
-                body.mass(),
-                body.bodyInertia()
+                impulse,
+                angularImpulse,
+                (1 + beta)*body.mass(),
+                (1 + beta)*body.bodyInertia()
+            );
+            body.setAccelerations
+            (
+                (body.state().velocity - U0)/subDt,
+                (body.state().angularVelocity - W0)/subDt
             );
         }
     }

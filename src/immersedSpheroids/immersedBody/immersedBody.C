@@ -270,6 +270,8 @@ void Foam::immersedBody::writeState(Ostream& os) const
     os.writeEntry("fluidAngularMomentum", fluidAngularMomentum_);
     os.writeEntry("fluidMomentum0", fluidMomentum0_);
     os.writeEntry("fluidAngularMomentum0", fluidAngularMomentum0_);
+    os.writeEntry("acceleration", acceleration_);
+    os.writeEntry("angularAcceleration", angularAcceleration_);
 }
 
 
@@ -299,6 +301,9 @@ void Foam::immersedBody::readState(const dictionary& dict)
     fluidMomentum0_ = readCheckedOrDefault<vector>(dict, "fluidMomentum0", Zero, vec);
     fluidAngularMomentum0_ =
         readCheckedOrDefault<vector>(dict, "fluidAngularMomentum0", Zero, vec);
+    acceleration_ = readCheckedOrDefault<vector>(dict, "acceleration", Zero, vec);
+    angularAcceleration_ =
+        readCheckedOrDefault<vector>(dict, "angularAcceleration", Zero, vec);
 }
 
 

@@ -53,8 +53,19 @@ Foam::bodyMotions::prescribed::prescribed(const word& type, const dictionary& di
 :
     bodyMotion(type),
     velocity_(readFunction(dict, "velocity")),
-    angularVelocity_(readFunction(dict, "angularVelocity"))
+    angularVelocity_(readFunction(dict, "angularVelocity")),
+    integrable_(true)
 {
+    // OpenFOAM v1912 implements Function1::integrate only for these types
+    // (calling it on the others aborts; probing it is unsafe: the table's
+    // integrationWeights corrupts the heap for an empty interval)
+    static const wordHashSet integrable
+    ({
+        "constant", "uniform", "zero", "one", "polynomial",
+        "table", "tableFile", "csvFile"
+    });
+    integrable_ = integrable.found(velocity_->type());
+
     immersedSpheroids::checkKeywords
     (
         dict,
@@ -87,7 +98,20 @@ void Foam::bodyMotions::prescribed::advance
     const vector&
 ) const
 {
-    state.centre += velocity_->integrate(t, t + dt);
+    if (integrable_)
+    {
+        state.centre += velocity_->integrate(t, t + dt);
+    }
+    else
+    {
+        state.centre +=
+            dt/6
+           *(
+                velocity_->value(t)
+              + 4*velocity_->value(t + 0.5*dt)
+              + velocity_->value(t + dt)
+            );
+    }
     const vector omegaMid = angularVelocity_->value(t + 0.5*dt);
     state.orientation = rotationQuaternion(dt*omegaMid)*state.orientation;
     state.orientation.normalize();

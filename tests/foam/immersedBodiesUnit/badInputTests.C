@@ -1,0 +1,307 @@
+/*---------------------------------------------------------------------------*\
+  spheroidFoam: particle-resolved flows of immersed spheroids for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    4. Bad input: broken versions of constant/immersedBodiesProperties are
+    written into the case and immersedBodies(mesh) constructed from each:
+    a FatalIOError whose message names the keyword (or the bad value) and
+    whose file is constant/immersedBodiesProperties. A free body without
+    constant/g is a FatalError naming g. The good file is restored at the
+    end.
+\*---------------------------------------------------------------------------*/
+
+#include "immersedBodiesTests.H"
+#include "immersedBodies.H"
+#include <fstream>
+
+using namespace testChecks;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+const char* const header =
+    "FoamFile { version 2.0; format ascii; class dictionary;"
+    " object immersedBodiesProperties; }\n";
+
+const std::string goodBody =
+    "semiAxes (0.1 0.05 0.05); density 1100; centre (0.5 0.5 0.5);"
+    " motion { type fixed; }";
+
+void writeProperties(const fileName& file, const std::string& text)
+{
+    std::ofstream os(file.c_str());
+    os << header << text << '\n';
+}
+
+} // End anonymous namespace
+
+
+void immersedBodiesTests::testBadInput(const Time& runTime, const fvMesh& mesh)
+{
+    const fileName file = runTime.path()/runTime.constant()/"immersedBodiesProperties";
+    const fileName saved = file + ".good";
+    if (!Foam::cp(file, saved))
+    {
+        check(false, "bad input: cannot copy " + file + " to " + saved);
+        return;
+    }
+    const bool throwingFatal = FatalError.throwExceptions(true);
+
+    const std::string fname("immersedBodiesProperties");
+    const std::string output = " output { timeSeries no; surfaces no; }";
+
+    // Write text as the file and construct the bodies from it
+    auto constructRaw = [&](const std::string& text)
+    {
+        return [&, text]()
+        {
+            writeProperties(file, text);
+            immersedBodies bodies(mesh);
+        };
+    };
+    // The same for expectFatalIOError: a FatalError that is not an IO error
+    // (FatalError throws in this part) is shown and swallowed, so that the
+    // check fails as "no FatalIOError raised"
+    auto construct = [&](const std::string& text)
+    {
+        return [&, text]()
+        {
+            try
+            {
+                constructRaw(text)();
+            }
+            catch (const Foam::IOerror&)
+            {
+                throw;
+            }
+            catch (const Foam::error& err)
+            {
+                Info<< "    a FatalError, not a FatalIOError: "
+                    << err.message().c_str() << endl;
+            }
+        };
+    };
+    auto withBody = [&](const std::string& body)
+    {
+        return "fluidDensity 1000;" + output + " bodies { b1 { " + body + " } }";
+    };
+
+    // The writer and the construction work: a good file constructs
+    {
+        bool ok = true;
+        const bool throwing = FatalIOError.throwExceptions();
+        try
+        {
+            constructRaw(withBody(goodBody))();
+        }
+        catch (const Foam::error& err)
+        {
+            ok = false;
+            Info<< err.message().c_str() << endl;
+        }
+        FatalIOError.throwExceptions(throwing);
+        check(ok, "bad input: the good reference file constructs");
+    }
+
+    expectFatalIOError
+    (
+        construct(withBody("semiAxes (0.1 0.05 0.05); density 1100; centre (0.5 0.5 0.5);")),
+        {"'motion'", fname},
+        "missing motion"
+    );
+    expectFatalIOError
+    (
+        construct(withBody("semiAxes (0.1 0.05 0.05); density 1100; centre (0.5 0.5 0.5); motion { type floating; }")),
+        {"floating", "fixed", "prescribed", "free", "freeTranslation", "freeRotation", fname},
+        "unknown motion type lists the allowed types"
+    );
+    expectFatalIOError
+    (
+        construct(withBody("semiAxes (0.1 0.05 0.05); density 1100; centre (0.5 0.5 0.5); motion { }")),
+        {"'type'", "fixed", fname},
+        "motion without type"
+    );
+    expectFatalIOError
+    (
+        construct(withBody("semiAxes (0.1 -0.05 0.05); density 1100; centre (0.5 0.5 0.5); motion { type fixed; }")),
+        {"'semiAxes'", "> 0", fname},
+        "negative semi-axis"
+    );
+    expectFatalIOError
+    (
+        construct(withBody("semiAxes (0.1 0 0.05); density 1100; centre (0.5 0.5 0.5); motion { type fixed; }")),
+        {"'semiAxes'", "> 0", fname},
+        "zero semi-axis"
+    );
+    expectFatalIOError
+    (
+        construct(withBody("semiAxes (0.1 0.05 0.05); density -1100; centre (0.5 0.5 0.5); motion { type fixed; }")),
+        {"'density'", "> 0", fname},
+        "negative density"
+    );
+    expectFatalIOError
+    (
+        construct(output + " bodies { b1 { " + goodBody + " } }"),
+        {"'fluidDensity'", "missing", fname},
+        "missing fluidDensity"
+    );
+    for (const char* ratio : {"0", "1.5", "-1e-3"})
+    {
+        expectFatalIOError
+        (
+            construct("penaltyRatio " + std::string(ratio) + "; " + withBody(goodBody)),
+            {"'penaltyRatio'", "(0, 1]", fname},
+            std::string("penaltyRatio ") + ratio + " out of (0, 1]"
+        );
+    }
+    expectFatalIOError
+    (
+        construct("penaltyRatoi 1e-3; " + withBody(goodBody)),
+        {"penaltyRatoi", "Allowed keywords", "penaltyRatio", fname},
+        "misspelt top-level keyword"
+    );
+    expectFatalIOError
+    (
+        construct(withBody("semiAxes (0.1 0.05 0.05); densty 1100; centre (0.5 0.5 0.5); motion { type fixed; }")),
+        {"densty", "Allowed keywords", fname},
+        "misspelt body keyword"
+    );
+    expectFatalIOError
+    (
+        construct(withBody("semiAxes (0.1 0.05 0.05); density 1100; centre (0.5 0.5 0.5); motion { type prescribed; velocty (1 0 0); }")),
+        {"velocty", "Allowed keywords", fname},
+        "misspelt motion keyword"
+    );
+    expectFatalIOError
+    (
+        construct(withBody("semiAxes (0.1 0.05 0.05); density 1100; centre middle; motion { type fixed; }")),
+        {"'centre'", "expected", fname},
+        "word where a vector is expected"
+    );
+    expectFatalIOError
+    (
+        construct(withBody("semiAxes 0.1; density 1100; centre (0.5 0.5 0.5); motion { type fixed; }")),
+        {"'semiAxes'", "expected", fname},
+        "scalar where a vector is expected"
+    );
+    expectFatalIOError
+    (
+        construct("fluidDensity water; " + output + " bodies { b1 { " + goodBody + " } }"),
+        {"'fluidDensity'", "water", fname},
+        "word where a number is expected"
+    );
+    expectFatalIOError
+    (
+        construct(withBody("semiAxes (0.1 0.05 0.05); density 1100; centre (0.5 0.5 0.5); motion { type prescribed; velocity (1 fast 0); }")),
+        {"velocity", fname},
+        "word inside a prescribed velocity"
+    );
+    expectFatalIOError
+    (
+        construct(withBody("semiAxes (0.1 0.05 0.05); density 1100; centre (0.5 0.5 0.5); orientation (1 0 0 0.5); motion { type fixed; }")),
+        {"'orientation'", "unit", fname},
+        "orientation not a unit quaternion"
+    );
+    expectFatalIOError
+    (
+        construct(withBody("semiAxes (0.1 0.05 0.05); density 1100; centre (0.5 0.5 0.5); orientation (1 0 0 0); axis (1 0 0); motion { type fixed; }")),
+        {"'axis'", "orientation", fname},
+        "both orientation and axis"
+    );
+    expectFatalIOError
+    (
+        construct("fluidDensity 1000;" + output),
+        {"'bodies'", "packing", fname},
+        "neither bodies nor packing"
+    );
+    expectFatalIOError
+    (
+        construct("subSteps 0; " + withBody(goodBody)),
+        {"'subSteps'", fname},
+        "subSteps 0"
+    );
+    expectFatalIOError
+    (
+        construct
+        (
+            "fluidDensity 1000;" + output + " packing { file \"constant/noSuchPacking.h5\";"
+            " density 1100; motion { type fixed; } }"
+        ),
+        {"'file'", "noSuchPacking.h5", fname},
+        "packing file that does not exist"
+    );
+    expectFatalIOError
+    (
+        construct
+        (
+            "fluidDensity 1000;" + output + " packing { density 1100; motion { type fixed; } }"
+        ),
+        {"'file'", "missing", fname},
+        "packing without file"
+    );
+
+    // A body free in translation needs constant/g, which this case lacks
+    expectFatalError
+    (
+        constructRaw(withBody("semiAxes (0.1 0.05 0.05); density 1100; centre (0.5 0.5 0.5); motion { type free; }")),
+        {"gravity", "constant/g"},
+        "free body without constant/g"
+    );
+
+    // The output dictionary: every keyword accepted, range and misspelling
+    // checked
+    {
+        std::string problem;
+        const bool throwing = FatalIOError.throwExceptions();
+        try
+        {
+            constructRaw
+            (
+                "fluidDensity 1000; bodies { b1 { " + goodBody + " } }"
+                " output { timeSeries no; surfaces no; surfaceSubdivisions 3;"
+                " solidFraction no; }"
+            )();
+        }
+        catch (const Foam::error& err)
+        {
+            problem = err.message();
+        }
+        FatalIOError.throwExceptions(throwing);
+        check
+        (
+            problem.empty(),
+            "output dictionary with all its keywords constructs"
+          + (problem.empty() ? std::string() : ": " + problem)
+        );
+    }
+    expectFatalIOError
+    (
+        construct
+        (
+            "fluidDensity 1000; bodies { b1 { " + goodBody + " } }"
+            " output { timeSeries no; surfaces no; surfaceSubdivisions 9; }"
+        ),
+        {"'surfaceSubdivisions'", "[0, 8]", fname},
+        "output surfaceSubdivisions out of range"
+    );
+    expectFatalIOError
+    (
+        construct
+        (
+            "fluidDensity 1000; bodies { b1 { " + goodBody + " } }"
+            " output { timeSeries no; surfaces no; surfaceResolution 24; }"
+        ),
+        {"surfaceResolution", "Allowed keywords", "surfaceSubdivisions", fname},
+        "unknown output keyword"
+    );
+
+    FatalError.throwExceptions(throwingFatal);
+    Foam::mv(saved, file);
+}
+
+
+// ************************************************************************* //

@@ -17,11 +17,13 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-here = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(__file__))
+# plot.py RUN_ROOT OUT_DIR: the runs are RUN_ROOT/<scheme>-cv<C_v>-<ratio>
+run_root = os.path.abspath(sys.argv[1])
+here = os.path.abspath(sys.argv[2])
 rows = []
 CONFIGS = ("Euler, C_v 0", "backward, C_v 0", "backward, C_v 0.5")
 fig, axes = plt.subplots(1, 3, figsize=(15, 4.2))
-for d in sorted(glob.glob(os.path.join(here, "run", "*-*"))):
+for d in sorted(glob.glob(os.path.join(run_root, "*-*"))):
     scheme, cv, ratio = os.path.basename(d).split("-", 2)
     scheme = f"{scheme}, C_v {cv[2:]}"
     ratio = float(ratio)

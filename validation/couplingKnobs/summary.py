@@ -1,0 +1,29 @@
+"""Tables of validation/couplingKnobs/results/runs.csv: per knob, the settling speed at 0.2 s,
+its difference to the series' reference run and the time per step relative to the default
+(8 cells/D, penaltyRatio 1e-3, 1 sub-step; the cpd runs include the default's mesh)."""
+import csv
+import sys
+
+rows = list(csv.DictReader(open(sys.argv[1])))
+default = next((r for r in rows if r["knob"] == "cpd" and r["value"] == "8"), None)
+series = {
+    "cpd": ("cells per diameter", lambda r: -float(r["value"])),
+    "penaltyRatio": ("penaltyRatio (eta/dt)", lambda r: float(r["value"])),
+    "subSteps": ("sub-steps", lambda r: float(r["value"])),
+}
+for knob, (title, order) in series.items():
+    rs = [r for r in rows if r["knob"] == knob]
+    if default is not None and knob != "cpd":
+        rs.append(dict(default, knob=knob, value={"penaltyRatio": "1e-3", "subSteps": "1"}[knob]))
+    if not rs:
+        continue
+    rs.sort(key=order)
+    ref = rs[0]  # finest mesh / smallest penaltyRatio / one sub-step
+    print(f"\n### {title} (reference: {ref['value']})\n")
+    print("| " + title + " | cells | u_z(0.2 s) (m/s) | difference to reference | s/step | time vs default |")
+    print("|---|---|---|---|---|---|")
+    for r in sorted(rs, key=lambda r: float(r["value"])):
+        u, u0 = float(r["uz"]), float(ref["uz"])
+        rel = "-" if r is ref else f"{100 * (u - u0) / abs(u0):+.2f} %"
+        cost = f"{float(r['secondsPerStep']) / float(default['secondsPerStep']):.2f}x" if default else "-"
+        print(f"| {r['value']} | {r['cells']} | {u:.5f} | {rel} | {float(r['secondsPerStep']):.3f} | {cost} |")

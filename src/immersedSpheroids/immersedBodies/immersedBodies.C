@@ -219,7 +219,7 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     UName_("U"),
     penaltyRatio_(1e-3),
     subSteps_(1),
-    virtualMass_(0),
+    virtualMass_(0.5),
     g_(Zero),
     cellRadius_(immersedSpheroids::cellRadii(mesh)),
     updateIndex_(-1),
@@ -278,15 +278,15 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
 
     virtualMass_ = readCheckedOrDefault<scalar>
     (
-        properties_, "virtualMass", 0,
-        "the virtual-mass coefficient C_v of the stabilisation, in [0, 10] (0: off)"
+        properties_, "virtualMass", 0.5,
+        "the virtual-mass coefficient C_v of the stabilisation, in [0, 10] (default 0.5; 0: off)"
     );
     if (virtualMass_ < 0 || virtualMass_ > 10)
     {
         entryError
         (
             properties_, "virtualMass",
-            "must be in [0, 10] (0: off; 0.5 for light bodies), got "
+            "must be in [0, 10] (0: off; 0.5 is the default), got "
           + Foam::name(virtualMass_)
         );
     }

@@ -20,10 +20,10 @@ for knob, (title, order) in series.items():
     rs.sort(key=order)
     ref = rs[0]  # finest mesh / smallest penaltyRatio / one sub-step
     print(f"\n### {title} (reference: {ref['value']})\n")
-    print("| " + title + " | cells | u_z(0.2 s) (m/s) | difference to reference | s/step | time vs default |")
+    print("| " + title + " | cells | u_z(0.2 s) (m/s) | settling speed vs reference | s/step | time vs default |")
     print("|---|---|---|---|---|---|")
     for r in sorted(rs, key=lambda r: float(r["value"])):
         u, u0 = float(r["uz"]), float(ref["uz"])
-        rel = "-" if r is ref else f"{100 * (u - u0) / abs(u0):+.2f} %"
+        rel = "-" if r is ref else f"{100 * (abs(u) - abs(u0)) / abs(u0):+.2f} %"
         cost = f"{float(r['secondsPerStep']) / float(default['secondsPerStep']):.2f}x" if default else "-"
         print(f"| {r['value']} | {r['cells']} | {u:.5f} | {rel} | {float(r['secondsPerStep']):.3f} | {cost} |")

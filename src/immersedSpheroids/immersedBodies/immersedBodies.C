@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "immersedBodies.H"
+#include "processCpuTime.H"
 #include "cellSolidFraction.H"
 #include "dictionaryChecks.H"
 #include "packingBodies.H"
@@ -228,7 +229,9 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     ddtScheme_(immersedSpheroids::ddtCoefficients::scheme::Euler),
     solveDdt_(),
     cellsFound_(false),
-    cellSlot_(mesh.nCells(), -1)
+    cellSlot_(mesh.nCells(), -1),
+    updateCpu_(0),
+    penaltyCpu_(0)
 {
     using namespace immersedSpheroids;
 
@@ -359,6 +362,7 @@ void Foam::immersedBodies::update(const volVectorField& U)
     {
         return;
     }
+    const double cpu0 = immersedSpheroids::processCpuTime();
 
     const scalar dt = time.deltaTValue();
     const scalar t0 = time.value() - dt;
@@ -387,6 +391,15 @@ void Foam::immersedBodies::update(const volVectorField& U)
     updateIndex_ = time.timeIndex();
 
     output_->append(time.value());
+
+    // the module's cost: this update, and the penalty terms of the last step
+    const scalar lastPenaltyCpu = penaltyCpu_;
+    penaltyCpu_ = 0;
+    updateCpu_ = (immersedSpheroids::processCpuTime() - cpu0);
+    Info<< "immersedBodies: " << bodies_.size() << " bodies, "
+        << returnReduce(penaltyCells_.size(), sumOp<label>())
+        << " covered cells, CPU update " << updateCpu_
+        << " s, penalty (last step) " << lastPenaltyCpu << " s" << endl;
 }
 
 

@@ -11,6 +11,7 @@ Description
 
 #include "immersedBodies.H"
 #include "freeMotion.H"
+#include "processCpuTime.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -259,6 +260,7 @@ void Foam::immersedBodies::assemblePenalty
 
 void Foam::immersedBodies::addPenalty(fvVectorMatrix& source) const
 {
+    const double cpu0 = immersedSpheroids::processCpuTime();
     if (updateIndex_ != mesh_.time().timeIndex())
     {
         FatalErrorInFunction
@@ -279,17 +281,20 @@ void Foam::immersedBodies::addPenalty(fvVectorMatrix& source) const
         diag[celli] -= k;
         su[celli] -= k*penaltyVelocity_[s];
     }
+    penaltyCpu_ += (immersedSpheroids::processCpuTime() - cpu0);
 }
 
 
 Foam::tmp<Foam::fvVectorMatrix>
 Foam::immersedBodies::penalty(const volVectorField& U) const
 {
+    const double cpu0 = immersedSpheroids::processCpuTime();
     auto tsource = tmp<fvVectorMatrix>::New
     (
         U,
         dimVolume*U.dimensions()/dimTime
     );
+    penaltyCpu_ += (immersedSpheroids::processCpuTime() - cpu0);   // the matrix; addPenalty times itself
     addPenalty(tsource.ref());
     return tsource;
 }

@@ -1,0 +1,271 @@
+#!/usr/bin/python3
+"""Jeffery orbit of a neutrally buoyant prolate spheroid (r = 2.5) in simple
+shear at Re = gamma a^2/nu = 0.1: the runs of validation/jefferyOrbit (see
+README.md), their table and figures.
+
+    jefferyOrbit.py run [--quick] [--group G ...] [--force] [--collect]
+    jefferyOrbit.py plot
+    jefferyOrbit.py single CASE [--cpd N] [--dt DT] [--end-time T] [--box LX H LZ]
+                               [--density-ratio R] [--virtual-mass CV]
+
+run:  groups: orbit (the measured orbit, rho_p/rho_f = 1), stability (short
+      runs that map where the explicit coupling is stable); one solver at a
+      time (serial, nice) in run/<name>/ (git-ignored); each finished run's
+      body time series is copied to results/<name>.h5 and its line to
+      results/runs.csv, skipped next time unless --force.
+      --quick: the smoke version (a short coarse run, run/quick/).
+plot: results/table.md and results/*.png.
+single: one run in the folder CASE (created; used by tests/foam/jefferyOrbitQuick);
+      prints and writes CASE/rotation.csv (final angle, omega_z, Jeffery's rate
+      there, the growth of the step-to-step oscillation).
+"""
+import argparse
+import csv
+import math
+import os
+import re
+import shutil
+import socket
+import sys
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import jeffery  # noqa: E402
+
+RESULTS = os.path.join(HERE, "results")
+RUNS_CSV = os.path.join(RESULTS, "runs.csv")
+R = 2.5
+MESH = dict(cpd=8, growth=1.2, max_ratio=8.0, box=(10.0, 10.0, 6.0))
+
+FIELDS = ["name", "group", "density_ratio", "virtualMass", "dt", "penaltyRatio", "subSteps",
+          "ddt", "nOuterCorrectors", "cpd", "cells", "lambda", "end_time", "steps", "wall_s",
+          "cpu_s", "status", "growth_per_step", "alternation",
+          "omega_end", "omega_jeffery_end", "T_half_pi", "T_pi", "T_fit", "r_fit", "T_jeffery",
+          "host", "date", "commit"]
+
+
+def campaign(quick=False):
+    runs = []
+    if quick:
+        runs.append(("quick", "quick", dict(MESH, dt=0.0007, end_time=0.07, virtual_mass=0.5)))
+        return runs
+    # the measured orbit: plain explicit coupling (virtualMass 0) at the largest
+    # stable step; and with the virtual-mass stabilisation (the library default
+    # C_v = 0.5) at a larger step, over a full period
+    runs.append(("orbit", "orbit-rho1-cv0-dt0.0007",
+                 dict(MESH, dt=0.0007, end_time=10.5, write_interval=3.5, virtual_mass=0)))
+    runs.append(("orbit", "orbit-rho1-cv0.5-dt0.0015",
+                 dict(MESH, dt=0.0015, end_time=19.5, write_interval=6.5, virtual_mass=0.5)))
+    # the stability map: 150 steps each
+    for cv, rho, dt, extra in ((0, 1, 0.02, {}), (0, 1, 0.0025, {}), (0, 1, 0.001, {}),
+                               (0, 1, 0.0007, {}),
+                               (0, 1, 0.001, dict(penalty_ratio=1e-6)),
+                               (0, 1, 0.001, dict(penalty_ratio=0.1)),
+                               (0, 1, 0.001, dict(sub_steps=5)),
+                               (0, 1, 0.001, dict(ddt="backward")),
+                               (0, 1, 0.001, dict(n_outer=3)),
+                               (0, 2, 0.0025, {}), (0, 2, 0.0015, {}),
+                               (0, 4, 0.005, {}), (0, 4, 0.0025, {}),
+                               (0.5, 1, 0.004, {}), (0.5, 1, 0.0025, {}), (0.5, 1, 0.0015, {}),
+                               (0.5, 1, 0.001, {}), (1.0, 1, 0.0025, {})):
+        tag = "".join(f"-{k}{v}" for k, v in extra.items())
+        runs.append(("stability", f"stab-cv{cv:g}-rho{rho}-dt{dt:g}{tag}",
+                     dict(MESH, dt=dt, density_ratio=rho, end_time=150 * dt, virtual_mass=cv,
+                          **extra)))
+    return runs
+
+
+def provenance():
+    """The commit of the library the run used: HEAD, '+src' if src/ differs from it."""
+    import subprocess
+    top = os.path.abspath(os.path.join(HERE, "..", ".."))
+    try:
+        head = subprocess.run(["git", "-C", top, "rev-parse", "--short", "HEAD"], check=True,
+                              capture_output=True, text=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", top, "diff", "--quiet", "HEAD", "--", "src"]).returncode
+        return head + ("+src" if dirty else "")
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
+def read_csv(path):
+    if not os.path.exists(path):
+        return []
+    with open(path) as fh:
+        return list(csv.DictReader(fh))
+
+
+def oscillation_growth(omega):
+    """(growth factor per step, final amplitude) of the period-2 (step-to-step
+    alternating) part of omega_z, from its second differences
+    |w[k+1] - 2 w[k] + w[k-1]| (4 x the amplitude of an alternation; a smooth
+    variation gives ~ dt^2 w''): the mean of the last 5 against 5 in the middle
+    of the run."""
+    d2 = np.abs(omega[2:] - 2 * omega[1:-1] + omega[:-2])
+    n = len(d2)
+    if n < 20:
+        return float("nan"), float(d2[-1] / 4) if n else float("nan")
+    a0 = np.mean(d2[n // 2: n // 2 + 5]) + 1e-300
+    a1 = np.mean(d2[-5:]) + 1e-300
+    return float((a1 / a0) ** (1.0 / (n - 5 - n // 2))), float(a1 / 4)
+
+
+def summarise(case, kw):
+    """Analyse a finished (or diverged) run."""
+    t, q, om, tq = jeffery.read_series(case)
+    phi, pz = jeffery.phi_of(q)
+    w = om[:, 2]
+    g, amp = oscillation_growth(w)
+    rate_j = -float(jeffery.jeffery_rate(phi[-1], R))
+    # stable: close to Jeffery's rate and the alternation decays or is negligible
+    bounded = (np.all(np.isfinite(w)) and abs(w[-1] - rate_j) < 0.5 * abs(rate_j)
+               and (g < 1.0 or amp < 1e-4 * abs(rate_j)))
+    out = dict(growth_per_step=f"{g:.4f}", alternation=f"{amp:.2e}", omega_end=f"{w[-1]:.5g}",
+               omega_jeffery_end=f"{rate_j:.5g}", status="stable" if bounded else "UNSTABLE",
+               T_jeffery=f"{jeffery.jeffery_period(R):.5f}")
+    res = jeffery.analyse(case, R)
+    c = jeffery.crossings(t, phi, 0.5 * math.pi)
+    if c:
+        out["T_half_pi"] = f"{4 * c[0]:.5f}"      # phi = pi/2 at T/4
+    c = jeffery.crossings(t, phi, math.pi)
+    if c:
+        out["T_pi"] = f"{2 * c[0]:.5f}"           # phi = pi at T/2
+    if "fit" in res and t[-1] > 2:
+        out["T_fit"] = f"{res['fit']['T_fit']:.5f}"
+        out["r_fit"] = f"{res['fit']['r_eff']:.4f}"
+    return out
+
+
+def cpu_seconds(case):
+    try:
+        with open(os.path.join(case, "log.solver")) as fh:
+            t = re.findall(r"ExecutionTime = (\S+) s", fh.read())
+        return float(t[-1]) if t else float("nan")
+    except OSError:
+        return float("nan")
+
+
+def do_run(args):
+    csv_path = os.path.join(RESULTS, "quick.csv") if args.quick else RUNS_CSV
+    os.makedirs(RESULTS, exist_ok=True)
+    done = {r["name"] for r in read_csv(csv_path)} if not args.force else set()
+    ok = True
+    for group, name, kw in campaign(args.quick):
+        if args.group and group not in args.group:
+            continue
+        if name in done and not args.quick:
+            print(f"{name}: in {os.path.relpath(csv_path, HERE)}, skipped")
+            continue
+        case = os.path.join(HERE, "run", name)
+        print(f"{name} ({group}):", flush=True)
+        try:
+            if args.collect:
+                # an existing run (e.g. one started by hand with the same settings)
+                with open(os.path.join(case, "log.blockMesh")) as fh:
+                    cells = int(re.search(r"nCells:\s*(\d+)", fh.read()).group(1))
+                with open(os.path.join(case, "log.solver")) as fh:
+                    wall = float(re.findall(r"ClockTime = (\S+) s", fh.read())[-1])
+            else:
+                info, wall, cells = jeffery.run(case, **kw)
+            failed = False
+        except RuntimeError as e:
+            # a diverged run ends with a floating-point exception: keep what it wrote
+            print(f"  {e}")
+            failed = True
+            wall = float("nan")
+            info = dict(lam=kw["dt"] * 0.0)
+            with open(os.path.join(case, "log.blockMesh")) as fh:
+                cells = int(re.search(r"nCells:\s*(\d+)", fh.read()).group(1))
+        s = summarise(case, kw)
+        if failed:
+            s["status"] = "DIVERGED"
+        h = 1.0 / kw["cpd"]
+        nu = 1.25 ** 2 / 0.1
+        row = dict(name=name, group=group, density_ratio=kw.get("density_ratio", 1.0),
+                   virtualMass=kw.get("virtual_mass", 0.5),
+                   dt=kw["dt"], penaltyRatio=kw.get("penalty_ratio", 1e-3),
+                   subSteps=kw.get("sub_steps", 1), ddt=kw.get("ddt", "Euler"),
+                   nOuterCorrectors=kw.get("n_outer", 1), cpd=kw["cpd"],
+                   cells=cells, end_time=kw["end_time"],
+                   steps=len(jeffery.read_series(case)[0]) - 1,
+                   wall_s=f"{wall:.0f}", cpu_s=f"{cpu_seconds(case):.0f}",
+                   host=socket.gethostname(), date=time.strftime("%Y-%m-%d %H:%M"),
+                   commit=provenance(), **s)
+        row["lambda"] = f"{nu * kw['dt'] / h ** 2:.3g}"
+        print("  " + ", ".join(f"{k} {row.get(k, '')}" for k in
+                               ("status", "growth_per_step", "omega_end", "omega_jeffery_end",
+                                "T_half_pi", "T_pi", "T_fit", "wall_s")), flush=True)
+        if args.quick:
+            w, wj = float(row["omega_end"]), float(row["omega_jeffery_end"])
+            good = row["status"] == "stable" and w < 0 and abs(w / wj - 1) < 0.1
+            print("quick: " + ("passed" if good else "FAILED")
+                  + f" (omega_z {w:.4f}, Jeffery {wj:.4f})")
+            ok = ok and good
+        else:
+            shutil.copy(os.path.join(case, "postProcessing", "immersedBodies", "bodies.h5"),
+                        os.path.join(RESULTS, f"{name}.h5"))
+        rows = [r for r in read_csv(csv_path) if r["name"] != name] + [row]
+        with open(csv_path, "w", newline="") as fh:
+            wr = csv.DictWriter(fh, fieldnames=FIELDS)
+            wr.writeheader()
+            wr.writerows(rows)
+    if not ok:
+        sys.exit(1)
+
+
+def do_single(args):
+    case = os.path.abspath(args.case)
+    kw = dict(MESH, cpd=args.cpd, dt=args.dt, end_time=args.end_time, box=tuple(args.box),
+              density_ratio=args.density_ratio, virtual_mass=args.virtual_mass)
+    info, wall, cells = jeffery.run(case, **kw)
+    t, q, om, tq = jeffery.read_series(case)
+    phi, pz = jeffery.phi_of(q)
+    row = dict(cells=cells, steps=len(t) - 1, t_end=f"{t[-1]:.6g}", phi_end=f"{phi[-1]:.6f}",
+               phi_jeffery=f"{float(jeffery.jeffery_phi(t[-1], R)):.6f}",
+               omega_z=f"{om[-1, 2]:.6f}",
+               omega_jeffery=f"{-float(jeffery.jeffery_rate(phi[-1], R)):.6f}",
+               growth_per_step=f"{oscillation_growth(om[:, 2])[0]:.5f}",
+               alternation=f"{oscillation_growth(om[:, 2])[1]:.3g}",
+               out_of_plane=f"{pz[-1]:.3g}", wall_s=f"{wall:.1f}",
+               cpu_s=f"{cpu_seconds(case):.1f}")
+    with open(os.path.join(case, "rotation.csv"), "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=list(row))
+        w.writeheader()
+        w.writerow(row)
+    print(", ".join(f"{k} {v}" for k, v in row.items()))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = ap.add_subparsers(dest="cmd", required=True)
+    g = sub.add_parser("single")
+    g.add_argument("case")
+    g.add_argument("--cpd", type=int, default=6)
+    g.add_argument("--dt", type=float, default=0.0007)
+    g.add_argument("--end-time", type=float, default=0.07)
+    g.add_argument("--box", type=float, nargs=3, default=[6.0, 6.0, 4.0])
+    g.add_argument("--density-ratio", type=float, default=1.0)
+    g.add_argument("--virtual-mass", type=float, default=0.5)
+    r = sub.add_parser("run")
+    r.add_argument("--quick", action="store_true")
+    r.add_argument("--force", action="store_true")
+    r.add_argument("--group", action="append", default=[])
+    r.add_argument("--collect", action="store_true",
+                   help="only analyse existing run folders (no solver runs)")
+    sub.add_parser("plot")
+    args = ap.parse_args()
+    if args.cmd == "run":
+        do_run(args)
+    elif args.cmd == "single":
+        do_single(args)
+    else:
+        import plotJeffery
+        plotJeffery.main(RESULTS)
+
+
+if __name__ == "__main__":
+    main()

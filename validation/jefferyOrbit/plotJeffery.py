@@ -1,0 +1,110 @@
+#!/usr/bin/python3
+"""Table and figures of validation/jefferyOrbit from results/runs.csv and the
+time series results/<name>.h5 (called by `jefferyOrbit.py plot`).
+
+Period estimates of a run started at phi = 0 (axis along the gradient):
+  T_half_pi = 4 t(phi = pi/2),  T_pi = 2 t(phi = pi)   (Jeffery's curve is
+  symmetric: phi = pi/2 at T/4, pi at T/2), and T_fit from a least-squares
+  fit of Jeffery's curve tan(phi) = r' tan(2 pi t/T + theta0) with T, r' and
+  theta0 free (t > 1).
+"""
+import csv
+import math
+import os
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import jeffery  # noqa: E402
+
+R = 2.5
+
+
+def read_h5(path):
+    import h5py
+    with h5py.File(path, "r", locking=False) as f:
+        n = min(f[k].shape[0] for k in ("time", "orientation", "angularVelocity"))
+        return f["time"][:n], f["orientation"][:n, 0, :], f["angularVelocity"][:n, 0, :]
+
+
+def main(results):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    with open(os.path.join(results, "runs.csv")) as fh:
+        rows = list(csv.DictReader(fh))
+    TJ = jeffery.jeffery_period(R)
+    md = [f"## Period (r = {R}, Re = gamma a^2/nu = 0.1; Jeffery: T = 2 pi (r + 1/r)/gamma = "
+          f"{TJ:.4f})", "",
+          "| run | rho_p/rho_f | dt | cells | T from t(phi = pi/2) | T from t(phi = pi) | "
+          "T fit | r fit | error (pi) | error (fit) | steps | wall [s] | CPU [s] |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    orbit_rows = [r for r in rows if r["group"] == "orbit"]
+    for r in orbit_rows:
+        def fmt(k):
+            return f"{float(r[k]):.3f}" if r.get(k) else "-"
+
+        def err(k):
+            return f"{float(r[k]) / TJ - 1:+.1%}" if r.get(k) else "-"
+        md.append(f"| {r['name']} | {r['density_ratio']} | {r['dt']} | {r['cells']} | "
+                  f"{fmt('T_half_pi')} | {fmt('T_pi')} | {fmt('T_fit')} | {r.get('r_fit') or '-'} | "
+                  f"{err('T_pi')} | {err('T_fit')} | {r['steps']} | {r['wall_s']} | {r['cpu_s']} |")
+    md.append("")
+    stab = [r for r in rows if r["group"] == "stability"]
+    if stab:
+        md += ["## Stability of the explicit coupling (150 steps from the start-up)", "",
+               "growth: the factor per step of the step-to-step alternation of omega_z over "
+               "the second half of the run (> 1: the period-2 oscillation grows).", "",
+               "| rho_p/rho_f | dt | lambda | penaltyRatio | subSteps | ddt | status | "
+               "growth/step | omega_z end | Jeffery | variant |",
+               "|---|---|---|---|---|---|---|---|---|---|---|"]
+        for r in stab:
+            variant = r["name"].split(f"dt{float(r['dt']):g}")[-1].lstrip("-") or "-"
+            md.append(f"| {r['density_ratio']} | {r['dt']} | {r['lambda']} | {r['penaltyRatio']} | "
+                      f"{r['subSteps']} | {r['ddt']} | {r['status']} | {r['growth_per_step']} | "
+                      f"{r['omega_end']} | {r['omega_jeffery_end']} | {variant} |")
+        md.append("")
+    with open(os.path.join(results, "table.md"), "w") as fh:
+        fh.write("\n".join(md) + "\n")
+    print("\n".join(md))
+
+    for r in orbit_rows:
+        path = os.path.join(results, f"{r['name']}.h5")
+        if not os.path.exists(path):
+            continue
+        t, q, om = read_h5(path)
+        phi, pz = jeffery.phi_of(q)
+        tt = np.linspace(0, t[-1], 2000)
+        fig, ax = plt.subplots(1, 2, figsize=(11, 4.3))
+        ax[0].plot(t, np.degrees(phi), "k-", lw=2, label="spheroidFoam")
+        ax[0].plot(tt, np.degrees(jeffery.jeffery_phi(tt, R)), "C3--", label=f"Jeffery, r = {R}")
+        fit = jeffery.fit_jeffery(t, phi, R)
+        if fit:
+            ax[0].plot(tt, np.degrees(jeffery.fitted_phi(tt, fit)), "C0:",
+                       label=f"fit: r' = {fit['r_eff']:.2f}, T = {fit['T_fit']:.2f}")
+        for k in (1, 2):
+            ax[0].axhline(90 * k, color="0.7", lw=0.8)
+        ax[0].set_xlabel("gamma t")
+        ax[0].set_ylabel("phi [deg] (axis from the gradient direction)")
+        ax[0].set_title(f"{r['name']}: T_J = {TJ:.3f}")
+        ax[0].legend(fontsize=8)
+        ax[0].grid(True, alpha=0.3)
+        pw = np.mod(phi, math.pi)
+        srt = np.argsort(pw)
+        ph = np.linspace(0, math.pi, 400)
+        m = t > 0.05
+        ax[1].plot(np.degrees(pw[m]), -om[m, 2], "k.", ms=1.5, label="spheroidFoam, -omega_z")
+        ax[1].plot(np.degrees(ph), jeffery.jeffery_rate(ph, R), "C3--", label="Jeffery dphi/dt")
+        ax[1].set_xlabel("phi mod 180 [deg]")
+        ax[1].set_ylabel("dphi/dt / gamma")
+        ax[1].legend(fontsize=8)
+        ax[1].grid(True, alpha=0.3)
+        fig.tight_layout()
+        fig.savefig(os.path.join(results, f"{r['name']}.png"), dpi=120)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "results"))

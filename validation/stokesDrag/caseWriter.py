@@ -1,0 +1,254 @@
+#!/usr/bin/python3
+"""Write the OpenFOAM dictionaries of one fixed-spheroid Stokes-drag case
+(used by stokesDrag.py and tests/foam/stokesDragQuick).
+
+Units: D_eq = 1 m (diameter of the equal-volume sphere), nu = 1 m^2/s,
+rho_f = 1 kg/m^3, so mu = 1 Pa s; the superficial velocity U is held by
+OpenFOAM's meanVelocityForce (Re = U D_eq / nu).
+"""
+import math
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+TOP = os.path.abspath(os.path.join(HERE, "..", ".."))
+REFINED_BOX_MESH = os.path.join(TOP, "applications", "utilities", "refinedBoxMesh",
+                                "refinedBoxMesh.py")
+
+HEADER = """/*--------------------------------*- C++ -*----------------------------------*\\
+  spheroidFoam validation: Stokes drag of a fixed spheroid (validation/stokesDrag)
+\\*---------------------------------------------------------------------------*/
+FoamFile
+{{
+    version     2.0;
+    format      ascii;
+    class       {cls};
+    location    "{loc}";
+    object      {obj};
+}}
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+"""
+
+FOOTER = "\n// ************************************************************************* //\n"
+
+
+def semi_axes(ar, d_eq=1.0):
+    """(polar, equatorial, equatorial) semi-axes of the spheroid of aspect ratio
+    ar = polar/equatorial with the volume of the sphere of diameter d_eq."""
+    r = 0.5 * d_eq
+    return (r * ar ** (2.0 / 3.0), r * ar ** (-1.0 / 3.0), r * ar ** (-1.0 / 3.0))
+
+
+def write(path, cls, loc, obj, body):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        f.write(HEADER.format(cls=cls, loc=loc, obj=obj) + body + FOOTER)
+
+
+def fine_half_widths(axes, h, margin):
+    """Half-widths of the uniform fine region: the body's bounding box plus
+    margin, rounded up to whole cells (an even number of cells per direction,
+    so the body centre is a mesh point, the same for every box size)."""
+    return [math.ceil((s + margin) / h) * h for s in axes]
+
+
+def write_case(case, ar, flow, box, cpd, dt, end_time, u=0.02, nu=1.0,
+               penalty_ratio=1e-6, margin=0.25, growth=1.1, max_ratio=4.0,
+               ddt="Euler", write_interval=None):
+    """Write case/ (system, constant, 0) for a body of aspect ratio ar with its
+    symmetry (body x) axis along world x, in a triply periodic box of side
+    box (D_eq units), flow direction flow = 'x' (axial) or 'y' (transverse),
+    cpd cells per D_eq in the fine region, Euler steps dt up to end_time."""
+    h = 1.0 / cpd
+    axes = semi_axes(ar)
+    fine = fine_half_widths(axes, h, margin)
+    half = 0.5 * box
+    if max(fine) >= half:
+        sys.exit(f"caseWriter: the fine region {fine} does not fit in the box {box}")
+    os.makedirs(os.path.join(case, "system"), exist_ok=True)
+    cmd = [sys.executable if sys.executable else "/usr/bin/python3", REFINED_BOX_MESH,
+           "--box", *map(str, (-half, half, -half, half, -half, half)),
+           "--fine", *(f"{s:.12g}" for f in fine for s in (-f, f)),
+           "--h", f"{h:.12g}", "--growth", str(growth), "--max-ratio", str(max_ratio),
+           "--periodic", "x", "--periodic", "y", "--periodic", "z",
+           "-o", os.path.join(case, "system", "blockMeshDict")]
+    out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
+    with open(os.path.join(case, "log.refinedBoxMesh"), "w") as f:
+        f.write(" ".join(cmd) + "\n" + out)
+
+    # flow: 'x' (along the symmetry axis), 'y' (across it) or 'xy' (both at
+    # once: Stokes flow is linear, the drag along x and along y are those of the
+    # two flows; each mean component is held by its own meanVelocityForce)
+    ubar = (u if "x" in flow else 0.0, u if "y" in flow else 0.0, 0.0)
+    if write_interval is None:
+        write_interval = 10 ** 8       # the runner stops the run with stopAt writeNow
+    write(os.path.join(case, "system", "controlDict"), "dictionary", "system", "controlDict", f"""\
+application     pimpleFoam;
+
+libs            ("libimmersedSpheroidsFvOptions.so");
+
+startFrom       latestTime;
+startTime       0;
+stopAt          endTime;
+endTime         {end_time:.12g};
+deltaT          {dt:.12g};
+
+writeControl    timeStep;
+writeInterval   {write_interval};
+purgeWrite      2;
+writeFormat     binary;
+writePrecision  12;
+writeCompression off;
+timeFormat      general;
+timePrecision   10;
+
+// the runner changes deltaT and stopAt while the solver runs
+runTimeModifiable yes;
+OptimisationSwitches
+{{
+    fileModificationChecking timeStamp;
+    fileModificationSkew 0;
+}}
+""")
+    write(os.path.join(case, "system", "fvOptions"), "dictionary", "system", "fvOptions", f"""\
+// the immersed body (volume penalisation, constant/immersedBodiesProperties)
+bodies
+{{
+    type            immersedBodies;
+    libs            ("libimmersedSpheroidsFvOptions.so");
+}}
+
+""" + "".join(f"""
+// holds the {d} component of the superficial velocity (the mean of U over the
+// whole box, body included) at {v:.12g} with a uniform pressure gradient along
+// {d}, printed in the log
+meanFlow{d.upper()}
+{{
+    type            meanVelocityForce;
+    selectionMode   all;
+    fields          (U);
+    Ubar            ({v if d == "x" else 0:.12g} {v if d == "y" else 0:.12g} 0);
+}}
+""" for d, v in (("x", ubar[0]), ("y", ubar[1])) if v != 0))
+    write(os.path.join(case, "system", "fvSchemes"), "dictionary", "system", "fvSchemes", f"""\
+ddtSchemes
+{{
+    default         {ddt};
+}}
+
+gradSchemes
+{{
+    default         Gauss linear;
+}}
+
+divSchemes
+{{
+    default         none;
+    div(phi,U)      Gauss linear;
+    div((nuEff*dev2(T(grad(U))))) Gauss linear;
+}}
+
+laplacianSchemes
+{{
+    default         Gauss linear corrected;
+}}
+
+interpolationSchemes
+{{
+    default         linear;
+}}
+
+snGradSchemes
+{{
+    default         corrected;
+}}
+""")
+    write(os.path.join(case, "system", "fvSolution"), "dictionary", "system", "fvSolution", """\
+solvers
+{
+    p
+    {
+        solver          GAMG;
+        smoother        DIC;
+        tolerance       1e-9;
+        relTol          0.01;
+    }
+
+    pFinal
+    {
+        $p;
+        relTol          0;
+    }
+
+    "(U|UFinal)"
+    {
+        solver          PBiCGStab;
+        preconditioner  DILU;
+        tolerance       1e-12;
+        relTol          0;
+    }
+}
+
+PIMPLE
+{
+    momentumPredictor yes;
+    nOuterCorrectors 1;
+    nCorrectors     2;
+    nNonOrthogonalCorrectors 0;
+    pRefCell        0;
+    pRefValue       0;
+}
+""")
+    write(os.path.join(case, "constant", "transportProperties"), "dictionary", "constant",
+          "transportProperties", f"""\
+transportModel  Newtonian;
+
+nu              {nu:.12g};
+""")
+    write(os.path.join(case, "constant", "turbulenceProperties"), "dictionary", "constant",
+          "turbulenceProperties", "simulationType  laminar;\n")
+    write(os.path.join(case, "constant", "immersedBodiesProperties"), "dictionary", "constant",
+          "immersedBodiesProperties", f"""\
+fluidDensity    1;
+
+// eta = penaltyRatio x deltaT: small against the viscous time of a cell,
+// h^2/nu, so the fully covered cells hold U = 0 to ~1e-6
+penaltyRatio    {penalty_ratio:.12g};
+
+bodies
+{{
+    spheroid
+    {{
+        semiAxes        ({axes[0]:.12g} {axes[1]:.12g} {axes[2]:.12g});
+        density         1;
+        centre          (0 0 0);
+        axis            (1 0 0);
+        motion          {{ type fixed; }}
+    }}
+}}
+
+output
+{{
+    timeSeries      yes;
+    surfaces        no;
+}}
+""")
+    for name, cls, dims, value in (("U", "volVectorField", "[0 1 -1 0 0 0 0]",
+                                    f"uniform ({ubar[0]:.12g} {ubar[1]:.12g} {ubar[2]:.12g})"),
+                                   ("p", "volScalarField", "[0 2 -2 0 0 0 0]", "uniform 0")):
+        write(os.path.join(case, "0", name), cls, "0", name, f"""\
+dimensions      {dims};
+
+internalField   {value};
+
+boundaryField
+{{
+    ".*"
+    {{
+        type            cyclic;
+    }}
+}}
+""")
+    return {"h": h, "semiAxes": axes, "fine": fine}

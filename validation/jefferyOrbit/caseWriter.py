@@ -46,7 +46,8 @@ def write(path, cls, loc, obj, body):
 def write_case(case, r=2.5, re=0.1, cpd=8, dt=0.02, end_time=20.0, box=(10.0, 10.0, 6.0),
                density_ratio=1.0, penalty_ratio=1e-3, sub_steps=1, ddt="Euler",
                margin=0.15, growth=1.15, max_ratio=6.0, phi0=0.0, n_correctors=2,
-               n_outer=1, write_interval=None, gamma=1.0, virtual_mass=0.5):
+               n_outer=1, write_interval=None, gamma=1.0, virtual_mass=0.5,
+               prescribed_omega=None):
     """Write case/. cpd: cells per minor diameter 2b in the fine region;
     box = (Lx, H, Lz); phi0: initial angle of the axis from y towards x [rad]."""
     b = 0.5
@@ -168,6 +169,11 @@ nu              {nu:.12g};      // gamma a^2/Re
     write(os.path.join(case, "constant", "turbulenceProperties"), "dictionary", "constant",
           "turbulenceProperties", "simulationType  laminar;\n")
     axis = (math.sin(phi0), math.cos(phi0), 0.0)
+    if prescribed_omega is None:
+        motion = "{ type freeRotation; }"
+    else:
+        # a diagnosis: the rotation imposed (the torque is measured, not used)
+        motion = f"{{ type prescribed; angularVelocity constant (0 0 {prescribed_omega:.12g}); }}"
     write(os.path.join(case, "constant", "immersedBodiesProperties"), "dictionary", "constant",
           "immersedBodiesProperties", f"""\
 fluidDensity    1;
@@ -184,7 +190,7 @@ bodies
         density         {density_ratio:.12g};
         centre          (0 0 0);
         axis            ({axis[0]:.12g} {axis[1]:.12g} {axis[2]:.12g});
-        motion          {{ type freeRotation; }}
+        motion          {motion}
     }}
 }}
 

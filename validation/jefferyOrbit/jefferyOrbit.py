@@ -43,7 +43,7 @@ MESH = dict(cpd=8, growth=1.2, max_ratio=8.0, box=(10.0, 10.0, 6.0))
 FIELDS = ["name", "group", "density_ratio", "virtualMass", "dt", "penaltyRatio", "subSteps",
           "ddt", "nOuterCorrectors", "cpd", "cells", "lambda", "end_time", "steps", "wall_s",
           "cpu_s", "status", "growth_per_step", "alternation",
-          "omega_end", "omega_jeffery_end", "T_half_pi", "T_pi", "T_fit", "r_fit", "T_jeffery",
+          "omega_end", "omega_jeffery_end", "omega_mean", "phi_mean", "phi0", "box", "T_half_pi", "T_pi", "T_fit", "r_fit", "T_jeffery",
           "host", "date", "commit"]
 
 
@@ -75,6 +75,23 @@ def campaign(quick=False):
         runs.append(("stability", f"stab-cv{cv:g}-rho{rho}-dt{dt:g}{tag}",
                      dict(MESH, dt=dt, density_ratio=rho, end_time=150 * dt, virtual_mass=cv,
                           **extra)))
+    # the rotation rates at phi = 0 and phi = pi/2 from short runs (200 steps):
+    # Jeffery's dphi/dt = A cos^2 phi + B sin^2 phi gives the period
+    # T = 2 pi/sqrt(A B) and r = sqrt(A/B): cheap checks of the box size, the
+    # resolution and the step against the orbit run
+    for tag, extra in (("c8", {}), ("c8-box14", dict(box=(14.0, 14.0, 8.0))),
+                       ("c8-dt0.00035", dict(dt=0.00035)), ("c12", dict(cpd=12, dt=0.0005)),
+                       ("c8-cv0.5-dt0.0015", dict(dt=0.0015, virtual_mass=0.5))):
+        for phi0 in (0, 90):
+            kw = dict(MESH, dt=0.0007, virtual_mass=0, phi0=math.radians(phi0))
+            kw.update(extra)
+            kw["end_time"] = max(200 * kw["dt"], 0.14)
+            runs.append(("rates", f"rates-{tag}-phi{phi0}", kw))
+    # is the flow itself stable at these steps? the rotation prescribed at
+    # Jeffery's rate at phi = 0, the torque watched
+    for dt in (0.0025, 0.005):
+        runs.append(("stability", f"stab-prescribed-dt{dt:g}",
+                     dict(MESH, dt=dt, end_time=150 * dt, prescribed_omega=-R * R / (R * R + 1))))
     return runs
 
 
@@ -118,12 +135,19 @@ def summarise(case, kw):
     t, q, om, tq = jeffery.read_series(case)
     phi, pz = jeffery.phi_of(q)
     w = om[:, 2]
+    if kw.get("prescribed_omega") is not None:
+        w = tq[:, 2]          # the rotation is imposed: watch the torque instead
     g, amp = oscillation_growth(w)
     rate_j = -float(jeffery.jeffery_rate(phi[-1], R))
     # stable: close to Jeffery's rate and the alternation decays or is negligible
-    bounded = (np.all(np.isfinite(w)) and abs(w[-1] - rate_j) < 0.5 * abs(rate_j)
-               and (g < 1.0 or amp < 1e-4 * abs(rate_j)))
-    out = dict(growth_per_step=f"{g:.4f}", alternation=f"{amp:.2e}", omega_end=f"{w[-1]:.5g}",
+    if kw.get("prescribed_omega") is not None:
+        bounded = np.all(np.isfinite(w)) and (g < 1.0 or amp < 1e-4 * abs(w[-1]))
+    else:
+        bounded = (np.all(np.isfinite(w)) and abs(w[-1] - rate_j) < 0.5 * abs(rate_j)
+                   and (g < 1.0 or amp < 1e-4 * abs(rate_j)))
+    k = max(1, len(t) // 4)          # the last quarter of the run
+    out = dict(omega_mean=f"{np.mean(om[-k:, 2]):.6g}", phi_mean=f"{np.mean(phi[-k:]):.6g}")
+    out.update(growth_per_step=f"{g:.4f}", alternation=f"{amp:.2e}", omega_end=f"{om[-1, 2]:.5g}",
                omega_jeffery_end=f"{rate_j:.5g}", status="stable" if bounded else "UNSTABLE",
                T_jeffery=f"{jeffery.jeffery_period(R):.5f}")
     res = jeffery.analyse(case, R)
@@ -189,6 +213,8 @@ def do_run(args):
                    dt=kw["dt"], penaltyRatio=kw.get("penalty_ratio", 1e-3),
                    subSteps=kw.get("sub_steps", 1), ddt=kw.get("ddt", "Euler"),
                    nOuterCorrectors=kw.get("n_outer", 1), cpd=kw["cpd"],
+                   phi0=f"{math.degrees(kw.get('phi0', 0.0)):g}",
+                   box="x".join(f"{v:g}" for v in kw["box"]),
                    cells=cells, end_time=kw["end_time"],
                    steps=len(jeffery.read_series(case)[0]) - 1,
                    wall_s=f"{wall:.0f}", cpu_s=f"{cpu_seconds(case):.0f}",

@@ -39,9 +39,10 @@ def main(results):
     TJ = jeffery.jeffery_period(R)
     md = [f"## Period (r = {R}, Re = gamma a^2/nu = 0.1; Jeffery: T = 2 pi (r + 1/r)/gamma = "
           f"{TJ:.4f})", "",
-          "| run | rho_p/rho_f | dt | cells | T from t(phi = pi/2) | T from t(phi = pi) | "
-          "T fit | r fit | error (pi) | error (fit) | steps | wall [s] | CPU [s] |",
-          "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+          "| run | rho_p/rho_f | virtualMass | dt | cells | T from t(phi = pi/2) | "
+          "T from t(phi = pi) | T fit | r fit | error (pi) | error (fit) | steps | wall [s] | "
+          "CPU [s] |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     orbit_rows = [r for r in rows if r["group"] == "orbit"]
     for r in orbit_rows:
         def fmt(k):
@@ -49,23 +50,53 @@ def main(results):
 
         def err(k):
             return f"{float(r[k]) / TJ - 1:+.1%}" if r.get(k) else "-"
-        md.append(f"| {r['name']} | {r['density_ratio']} | {r['dt']} | {r['cells']} | "
+        md.append(f"| {r['name']} | {r['density_ratio']} | {r['virtualMass']} | {r['dt']} | "
+                  f"{r['cells']} | "
                   f"{fmt('T_half_pi')} | {fmt('T_pi')} | {fmt('T_fit')} | {r.get('r_fit') or '-'} | "
                   f"{err('T_pi')} | {err('T_fit')} | {r['steps']} | {r['wall_s']} | {r['cpu_s']} |")
     md.append("")
+    rates = {}
+    for r in rows:
+        if r["group"] == "rates":
+            tag = r["name"][len("rates-"):].rsplit("-phi", 1)[0]
+            rates.setdefault(tag, {})[r["phi0"]] = r
+    if rates:
+        md += ["## Rotation rates at phi = 0 and pi/2 (short runs, 200 steps or gamma t = 0.14)", "",
+               "dphi/dt = -omega_z = A cos^2 phi + B sin^2 phi through the two (mean over the "
+               "last quarter of each run): T = 2 pi/sqrt(A B), r' = sqrt(A/B); Jeffery: "
+               f"A = {R * R / (R * R + 1):.4f}, B = {1 / (R * R + 1):.4f}.", "",
+               "| case | cells | box | dt | virtualMass | A | B | A error | B error | r' | T | "
+               "T error | CPU [s] |",
+               "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+        for tag, pair in rates.items():
+            if "0" not in pair or "90" not in pair:
+                continue
+            p0, p9 = pair["0"], pair["90"]
+            f1, w1 = float(p0["phi_mean"]), -float(p0["omega_mean"])
+            f2, w2 = float(p9["phi_mean"]), -float(p9["omega_mean"])
+            M = np.array([[math.cos(f1) ** 2, math.sin(f1) ** 2],
+                          [math.cos(f2) ** 2, math.sin(f2) ** 2]])
+            A, B = np.linalg.solve(M, [w1, w2])
+            T = 2 * math.pi / math.sqrt(A * B)
+            Aj, Bj = R * R / (R * R + 1), 1 / (R * R + 1)
+            cpu = float(p0["cpu_s"]) + float(p9["cpu_s"])
+            md.append(f"| {tag} | {p0['cells']} | {p0['box']} | {p0['dt']} | {p0['virtualMass']} | "
+                      f"{A:.4f} | {B:.4f} | {A / Aj - 1:+.1%} | {B / Bj - 1:+.1%} | "
+                      f"{math.sqrt(A / B):.3f} | {T:.3f} | {T / TJ - 1:+.1%} | {cpu:.0f} |")
+        md.append("")
     stab = [r for r in rows if r["group"] == "stability"]
     if stab:
         md += ["## Stability of the explicit coupling (150 steps from the start-up)", "",
                "growth: the factor per step of the step-to-step alternation of omega_z over "
                "the second half of the run (> 1: the period-2 oscillation grows).", "",
-               "| rho_p/rho_f | dt | lambda | penaltyRatio | subSteps | ddt | status | "
-               "growth/step | omega_z end | Jeffery | variant |",
-               "|---|---|---|---|---|---|---|---|---|---|---|"]
+               "| rho_p/rho_f | virtualMass | dt | lambda | penaltyRatio | subSteps | ddt | "
+               "nOuterCorrectors | status | growth/step | omega_z end | Jeffery | CPU [s] |",
+               "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for r in stab:
-            variant = r["name"].split(f"dt{float(r['dt']):g}")[-1].lstrip("-") or "-"
-            md.append(f"| {r['density_ratio']} | {r['dt']} | {r['lambda']} | {r['penaltyRatio']} | "
-                      f"{r['subSteps']} | {r['ddt']} | {r['status']} | {r['growth_per_step']} | "
-                      f"{r['omega_end']} | {r['omega_jeffery_end']} | {variant} |")
+            md.append(f"| {r['density_ratio']} | {r['virtualMass']} | {r['dt']} | {r['lambda']} | "
+                      f"{r['penaltyRatio']} | {r['subSteps']} | {r['ddt']} | "
+                      f"{r.get('nOuterCorrectors') or 1} | {r['status']} | {r['growth_per_step']} | "
+                      f"{r['omega_end']} | {r['omega_jeffery_end']} | {r['cpu_s']} |")
         md.append("")
     with open(os.path.join(results, "table.md"), "w") as fh:
         fh.write("\n".join(md) + "\n")

@@ -77,7 +77,7 @@ def aitken(times, F, t0, t, s):
     return f3 + corr, corr / abs(f3)
 
 
-def run_case(case, ar, flow, box, cpd, lam=1.0, u=0.02, dt1=0.02, tol1=1e-3, tol=2e-4,
+def run_case(case, ar, flow, box, cpd, lam=1.0, u=0.02, dt1=0.01, tol1=1e-3, tol=2e-4,
              t_max=None, stage1_only=False, verbose=True, poll=2.0, **kw):
     """Write and run one case; returns a dict of results. Drag: the steady
     hydrodynamic force of the body along x (flow along the symmetry axis)

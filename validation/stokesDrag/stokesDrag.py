@@ -6,7 +6,8 @@ validation/stokesDrag (see README.md), their table and figures.
     stokesDrag.py plot
     stokesDrag.py single CASE [--ar AR] [--box L] [--cpd N] [--lam LAMBDA] [--tol TOL]
 
-run:  runs the campaign (groups: lambda, box, boxcheck, resolution, fine24),
+run:  runs the campaign (groups: box, resolution-BODY,
+      lambda, fine24-BODY; BODY sphere, prolate2, oblate0.5),
       one pimpleFoam at a time (serial, nice), in run/<name>/ (git-ignored);
       each finished run is appended to results/runs.csv and skipped next time
       unless --force. --quick: the smoke version (two coarse runs in
@@ -83,20 +84,21 @@ def campaign(quick=False):
     # in the order of importance: the box series (the extrapolation), the
     # resolution series, the check of the box correction, the viscous number
     for body, ar in BODIES.items():
-        for box in (4, 6, 8):
+        # b is Hasimoto's (any body): two box sizes fix a and c; the sphere's
+        # third size checks the fitted b against Hasimoto's
+        for box in ((4, 6, 8) if body == "sphere" else (4, 6)):
             runs.append(("box", f"{body}-L{box}-c12-lam{LAMBDA_BOX:g}",
                          dict(body=body, ar=ar, box=box, cpd=12, lam=LAMBDA_BOX)))
     for body, ar in BODIES.items():
         for cpd in (8, 12, 16):
-            runs.append(("resolution", f"{body}-L4-c{cpd}-lam{LAMBDA:g}",
+            runs.append((f"resolution-{body}", f"{body}-L4-c{cpd}-lam{LAMBDA:g}",
                          dict(body=body, ar=ar, box=4, cpd=cpd, lam=LAMBDA)))
-    runs.append(("boxcheck", f"sphere-L6-c12-lam{LAMBDA:g}",
-                 dict(body="sphere", ar=1.0, box=6, cpd=12, lam=LAMBDA)))
     for lam in (4.0, 1.0, 0.25, 0.0625):
         runs.append(("lambda", f"sphere-L4-c12-lam{lam:g}", dict(body="sphere", ar=1.0, box=4,
                                                                  cpd=12, lam=lam)))
-    runs.append(("fine24", f"sphere-L4-c24-lam{LAMBDA:g}",
-                 dict(body="sphere", ar=1.0, box=4, cpd=24, lam=LAMBDA)))
+    for body, ar in BODIES.items():
+        runs.append((f"fine24-{body}", f"{body}-L4-c24-lam{LAMBDA_BOX:g}",
+                     dict(body=body, ar=ar, box=4, cpd=24, lam=LAMBDA_BOX)))
     return runs
 
 

@@ -1,0 +1,72 @@
+/**
+ * @file ContactLaw.hpp
+ * @brief Soft contact: linear spring-dashpot in the normal direction with the
+ *        rotation-aware effective mass, regularised Coulomb friction.
+ *
+ * Normal force on body 2 (n from body 1 to body 2, overlap delta > 0, normal
+ * relative speed u_n = (v_2 - v_1).n at the contact point):
+ *     F_n = (k_n delta - eta_n u_n) n,
+ *     k_n = m_eff (pi^2 + ln^2 e)/T_c^2,  eta_n = -2 m_eff ln(e)/T_c
+ * (physics-references.md 3): the contact point's normal speed is a damped
+ * oscillator that leaves the contact after T_c with -e times its impact speed.
+ * m_eff is the effective mass of the contact point along n,
+ *     1/m_eff = sum over the movable bodies of 1/m_i + (r_i x n).I_i^-1 (r_i x n),
+ * r_i from the body's centre to the contact point: for a spheroid hitting off
+ * its centre line the rotation is part of the rebound and the restitution of
+ * the contact point is still e (with 1/m_eff = 1/m_1 + 1/m_2 it is not).
+ * The law is kept to the end of the contact (delta back to 0), the short
+ * tensile end of the linear law included: it is what makes the restitution e.
+ * Tangential: F_t = -min(mu |F_n|, m_t |u_t|/dt) t, t = u_t/|u_t| the slip
+ * direction at the contact point and m_t its effective mass along t: Coulomb
+ * sliding friction that at most stops the slip within the sub-step dt (no
+ * tangential spring: sticking is not held against a steady load).
+ */
+#ifndef COLLISION_CONTACTLAW_HPP
+#define COLLISION_CONTACTLAW_HPP
+
+#include "collision/Types.hpp"
+
+namespace collision {
+
+struct ContactParameters {
+  /// dry coefficient of restitution e, in (0, 1]
+  Scalar restitution = 0.97;
+  /// Coulomb friction coefficient mu >= 0 (0: frictionless)
+  Scalar friction = 0;
+
+  /// @throws std::invalid_argument naming the parameter and its allowed range
+  void validate() const;
+};
+
+/// The rigid-body data a contact needs from one side (a wall: movable = false).
+struct ContactSide {
+  bool movable = false;
+  Scalar inverseMass = 0;
+  Mat3 inverseInertia = Mat3::Zero();  ///< world frame
+  Vec3 arm = Vec3::Zero();             ///< contact point - centre
+};
+
+/// 1/m along the unit direction d at the contact point, summed over both sides.
+Scalar inverseEffectiveMass(const ContactSide& s1, const ContactSide& s2, const Vec3& d);
+
+struct SpringDashpot {
+  Scalar stiffness = 0;  ///< k_n
+  Scalar damping = 0;    ///< eta_n
+};
+
+/// k_n and eta_n for the effective mass, restitution e and contact time T_c.
+SpringDashpot springDashpot(Scalar effectiveMass, Scalar restitution, Scalar contactTime);
+
+/**
+ * The contact force on body 2 (body 1 gets minus it).
+ * @param delta overlap (> 0 in contact)
+ * @param n unit normal from 1 to 2
+ * @param relativeVelocity (v_2 - v_1) at the contact point
+ */
+Vec3 contactForce(Scalar delta, const Vec3& n, const Vec3& relativeVelocity,
+                  const SpringDashpot& law, const ContactSide& s1, const ContactSide& s2,
+                  Scalar friction, Scalar dt);
+
+}  // namespace collision
+
+#endif

@@ -1,0 +1,67 @@
+/**
+ * @file LubricationLaw.hpp
+ * @brief Normal lubrication of two spheres or of a sphere and a plane, the
+ *        correction a resolved simulation adds below its activation gap.
+ *
+ * Stokes lubrication force on sphere 1 approaching sphere 2 (radii a1, a2,
+ * gap h, normal approach speed u): F = -6 pi mu a1 lambda u, with, for two
+ * spheres (Jeffrey & Onishi 1984, X11A to O(xi ln xi); beta = a2/a1,
+ * xi = 2 h/(a1 + a2)),
+ *     lambda = 2 beta^2/(1 + beta)^3 / xi
+ *            + beta (1 + 7 beta + beta^2)/(5 (1 + beta)^3) ln(1/xi)
+ *            + (1 + 18 beta - 29 beta^2 + 18 beta^3 + beta^4)/(42 (1 + beta)^3) xi ln(1/xi)
+ * (equal spheres: 1/(4 xi) - (9/40) ln xi - (3/112) xi ln xi, the form of
+ * physics-references.md 3), and for a sphere of radius a and a plane
+ * (eps = h/a; Cox & Brenner 1967, Costa et al. 2015)
+ *     lambda = 1/eps - (1/5) ln eps - (1/21) eps ln eps + 0.9713.
+ * The resolved flow carries the force down to gaps of about a cell; below the
+ * activation gap (xi_act, eps_act) the unresolved part
+ *     F = -6 pi mu a1 [lambda(max(xi, xi_sat)) - lambda(xi_act)] u
+ * is added, frozen below the saturation gap xi_sat (surface roughness; the
+ * founding paper's eps_1 = 1e-3), so that it stays finite in contact.
+ * For spheroids (Ardekani et al. 2016) a1, a2 are the Gaussian curvature
+ * radii of the bodies at their closest points (a plane: infinite).
+ */
+#ifndef COLLISION_LUBRICATIONLAW_HPP
+#define COLLISION_LUBRICATIONLAW_HPP
+
+#include "collision/Types.hpp"
+
+namespace collision {
+
+struct LubricationParameters {
+  /// xi_act = 2 h/(a1 + a2) below which the pair correction acts (> xi_sat)
+  Scalar pairActivation = 0.025;
+  /// eps_act = h/a below which the wall correction acts (> saturation)
+  Scalar wallActivation = 0.075;
+  /// xi_sat, eps_sat: the correction is frozen below this gap ratio (> 0)
+  Scalar saturation = 1e-3;
+
+  /// @throws std::invalid_argument naming the parameter and its allowed range
+  void validate() const;
+};
+
+/// lambda of two spheres of radii a1, a2 at the gap ratio xi = 2 h/(a1 + a2) > 0.
+Scalar pairLubricationLambda(Scalar xi, Scalar a1, Scalar a2);
+
+/// lambda of a sphere and a plane at eps = h/a > 0.
+Scalar wallLubricationLambda(Scalar eps);
+
+/**
+ * The correction's coefficient c >= 0: the force on body 1 is F_1 = c u n and
+ * on body 2 F_2 = -F_1, with n the unit normal from 1 to 2 and u = (v_2 - v_1).n
+ * the normal relative speed at the closest points (negative when approaching:
+ * the force then pushes the bodies apart; when separating it holds them).
+ * Zero at and beyond the activation gap; a gap below the saturation gap,
+ * contact included (gap <= 0), counts as the saturation gap.
+ * @param gap  surface gap h (any sign)
+ * @param a1, a2 the curvature radii (a2 = infinity for a plane)
+ */
+Scalar pairLubricationCoefficient(Scalar gap, Scalar a1, Scalar a2, Scalar viscosity,
+                                  const LubricationParameters& p);
+Scalar wallLubricationCoefficient(Scalar gap, Scalar a, Scalar viscosity,
+                                  const LubricationParameters& p);
+
+}  // namespace collision
+
+#endif

@@ -1,0 +1,259 @@
+#include "collision/CollisionModel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace collision {
+
+namespace {
+constexpr Scalar kPi = 3.14159265358979323846;
+constexpr Scalar kInf = std::numeric_limits<Scalar>::infinity();
+
+void require(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument("collision: " + what);
+}
+
+ContactSide sideOf(const CollisionBody& b, const Vec3& point) {
+  ContactSide s;
+  s.movable = b.movable;
+  if (b.movable) {
+    s.inverseMass = 1 / b.mass;
+    s.inverseInertia = b.inverseInertia;
+  }
+  s.arm = point - b.shape.centre();
+  return s;
+}
+
+Vec3 pointVelocity(const CollisionBody& b, const Vec3& point) {
+  return b.velocity + b.angularVelocity.cross(point - b.shape.centre());
+}
+
+/// The body scaled about its centre so that it contains the body grown by delta.
+ellipsoids::Ellipsoid grown(const ellipsoids::Ellipsoid& e, Scalar delta) {
+  if (delta <= 0) return e;
+  return ellipsoids::Ellipsoid(e.semiAxes() * (1 + delta / e.minSemiAxis()), e.centre(),
+                               e.orientation());
+}
+}  // namespace
+
+const char* toString(CollisionMode mode) {
+  switch (mode) {
+    case CollisionMode::none: return "none";
+    case CollisionMode::contact: return "contact";
+    case CollisionMode::lubricationContact: return "lubricationContact";
+  }
+  return "?";
+}
+
+CollisionMode collisionModeFromString(const std::string& name) {
+  for (CollisionMode m :
+       {CollisionMode::none, CollisionMode::contact, CollisionMode::lubricationContact}) {
+    if (name == toString(m)) return m;
+  }
+  throw std::invalid_argument("collision: unknown model '" + name +
+                              "' (allowed: none, contact, lubricationContact)");
+}
+
+void CollisionSettings::validate() const {
+  contact.validate();
+  lubrication.validate();
+  require(std::isfinite(viscosity) && viscosity >= 0,
+          "viscosity = " + std::to_string(viscosity) + " must be >= 0");
+  require(std::isfinite(maxOverlap) && maxOverlap > 0 && maxOverlap <= 0.5,
+          "maxOverlap = " + std::to_string(maxOverlap) + " must be in (0, 0.5]");
+  require(subStepsPerContact >= 4,
+          "subStepsPerContact = " + std::to_string(subStepsPerContact) + " must be >= 4");
+  require(std::isfinite(distanceAccuracy) && distanceAccuracy >= 1e-12 && distanceAccuracy <= 0.1,
+          "distanceAccuracy = " + std::to_string(distanceAccuracy) + " must be in [1e-12, 0.1]");
+  require(maxSubSteps >= 1, "maxSubSteps must be >= 1");
+}
+
+CollisionModel::CollisionModel(const CollisionSettings& settings, std::vector<PlaneWall> walls)
+    : settings_(settings), walls_(std::move(walls)) {
+  settings_.validate();
+  for (const PlaneWall& w : walls_) w.validate();
+}
+
+void CollisionModel::clearHistory() {
+  direction_.clear();
+  contactTime_.clear();
+}
+
+int CollisionModel::subSteps(const std::vector<CollisionBody>& bodies, Scalar dt,
+                             Scalar contactTime) const {
+  if (settings_.mode == CollisionMode::none || bodies.empty()) return 1;
+  require(std::isfinite(dt) && dt > 0, "time step " + std::to_string(dt) + " must be > 0");
+  require(std::isfinite(contactTime) && contactTime > 0,
+          "contact time " + std::to_string(contactTime) + " must be > 0");
+  Scalar speed = 0, aMin = kInf;
+  for (const CollisionBody& b : bodies) {
+    if (!b.velocity.allFinite() || !b.angularVelocity.allFinite()) {
+      throw std::runtime_error("collision: a body has a non-finite velocity");
+    }
+    aMin = std::min(aMin, b.shape.minSemiAxis());
+    if (b.movable) {
+      speed = std::max(speed,
+                       b.velocity.norm() + b.angularVelocity.norm() * b.shape.maxSemiAxis());
+    }
+  }
+  const Scalar vRel = 2 * speed;
+  Scalar tc = contactTime;
+  if (vRel > 0) tc = std::min(tc, kPi * settings_.maxOverlap * aMin / vRel);
+  const Scalar n = std::ceil(dt * settings_.subStepsPerContact / tc - 1e-9);
+  if (!(n <= settings_.maxSubSteps)) {
+    throw std::runtime_error("collision: " + std::to_string(n) +
+                             " body sub-steps would be needed in a step of " + std::to_string(dt) +
+                             " s (largest body speed " + std::to_string(speed) +
+                             "; maxSubSteps " + std::to_string(settings_.maxSubSteps) + ")");
+  }
+  return std::max(1, int(n));
+}
+
+void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar contactTime,
+                            Scalar subDt, std::vector<Vec3>& force, std::vector<Vec3>& torque) {
+  const int n = static_cast<int>(bodies.size());
+  force.assign(n, Vec3::Zero());
+  torque.assign(n, Vec3::Zero());
+  if (settings_.mode == CollisionMode::none) return;
+  const bool lubrication = settings_.mode == CollisionMode::lubricationContact;
+
+  // reach of each body: half the largest activation gap it can take part in
+  centres_.resize(n);
+  radii_.resize(n);
+  reach_.resize(n);
+  for (int i = 0; i < n; ++i) {
+    const ellipsoids::Ellipsoid& e = bodies[i].shape;
+    reach_[i] = lubrication ? 0.5 * settings_.lubrication.pairActivation *
+                                  e.maxOfMaxCurvatureRadius()
+                            : 0;
+    centres_[i] = e.centre();
+    radii_[i] = e.maxSemiAxis() + reach_[i];
+  }
+  nextDirection_.clear();
+  nextContactTime_.clear();
+
+  const auto& pairs = search_.find(centres_, radii_);
+  statistics_.candidatePairs += static_cast<long>(pairs.size());
+  for (const auto& [i, j] : pairs) {
+    const ellipsoids::Ellipsoid& e1 = bodies[i].shape;
+    const ellipsoids::Ellipsoid& e2 = bodies[j].shape;
+    if (!bodies[i].movable && !bodies[j].movable) continue;
+    if (overlap_.test(grown(e1, reach_[i]), grown(e2, reach_[j])) ==
+        ellipsoids::OverlapStatus::separated) {
+      ++statistics_.prefilterRejected;
+      continue;
+    }
+    ellipsoids::DistanceOptions options;
+    options.epsD = settings_.distanceAccuracy * std::min(e1.minGaussianRadius(), e2.minGaussianRadius());
+    const auto warm = direction_.find(key(i, j));
+    if (warm != direction_.end()) {
+      options.useInitialDirection = true;
+      options.initialDirection = warm->second;
+    }
+    ellipsoids::DistanceResult r = dual_.distance(e1, e2, options);
+    ++statistics_.distanceQueries;
+    statistics_.distanceIterations += r.iterations;
+    if (r.status == ellipsoids::DistanceStatus::maxIterations ||
+        r.status == ellipsoids::DistanceStatus::failed) {
+      ++statistics_.distanceNotConverged;
+      // separated pairs: auto's other methods; overlapping ones keep the dual's
+      // last iterate (its lower bound is certified)
+      const ellipsoids::DistanceResult other = fallback_.distance(e1, e2, options);
+      statistics_.distanceIterations += other.iterations;
+      if (other.status == ellipsoids::DistanceStatus::converged) r = other;
+    }
+    if (!std::isfinite(r.distance) || !r.direction.allFinite()) {
+      throw std::runtime_error("collision: no finite distance between bodies " +
+                               std::to_string(i) + " and " + std::to_string(j));
+    }
+    nextDirection_[key(i, j)] = r.direction;
+    interact(bodies, i, j, r.distance, r.direction, r.point1, r.point2, contactTime, subDt,
+             force, torque);
+  }
+
+  for (int i = 0; i < n; ++i) {
+    if (!bodies[i].movable) continue;
+    for (int w = 0; w < static_cast<int>(walls_.size()); ++w) {
+      const WallDistance d = wallDistance(bodies[i].shape, walls_[w]);
+      if (d.distance > settings_.lubrication.wallActivation * bodies[i].shape.maxOfMaxCurvatureRadius() *
+                           (lubrication ? 1 : 0)) {
+        continue;
+      }
+      interact(bodies, i, -1 - w, d.distance, -walls_[w].normal, d.bodyPoint, d.wallPoint,
+               contactTime, subDt, force, torque);
+    }
+  }
+
+  direction_.swap(nextDirection_);
+  contactTime_.swap(nextContactTime_);
+  for (int i = 0; i < n; ++i) {
+    if (!force[i].allFinite() || !torque[i].allFinite()) {
+      throw std::runtime_error("collision: non-finite collision force on body " + std::to_string(i));
+    }
+  }
+}
+
+void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, int j, Scalar gap,
+                              const Vec3& n, const Vec3& p1, const Vec3& p2, Scalar contactTime,
+                              Scalar subDt, std::vector<Vec3>& force, std::vector<Vec3>& torque) {
+  const bool wall = j < 0;
+  const CollisionBody& b1 = bodies[i];
+  const Vec3 point = 0.5 * (p1 + p2);
+  const ContactSide s1 = sideOf(b1, point);
+  ContactSide s2;
+  Vec3 v2 = Vec3::Zero();
+  Scalar aMin = b1.shape.minSemiAxis();
+  if (!wall) {
+    s2 = sideOf(bodies[j], point);
+    v2 = pointVelocity(bodies[j], point);
+    aMin = std::min(aMin, bodies[j].shape.minSemiAxis());
+  }
+  const Vec3 relative = v2 - pointVelocity(b1, point);
+  const Scalar un = relative.dot(n);
+  Vec3 f2 = Vec3::Zero();  // on body 2 (or the wall)
+
+  if (gap < 0) {
+    const std::uint64_t k = key(i, j);
+    const auto known = contactTime_.find(k);
+    Scalar tc = contactTime;
+    if (known != contactTime_.end()) {
+      tc = known->second;
+    } else if (un < 0) {
+      tc = std::min(tc, kPi * settings_.maxOverlap * aMin / -un);
+    }
+    nextContactTime_[k] = tc;
+    const Scalar wInv = inverseEffectiveMass(s1, s2, n);
+    if (wInv > 0) {
+      const SpringDashpot law = springDashpot(1 / wInv, settings_.contact.restitution, tc);
+      f2 += contactForce(-gap, n, relative, law, s1, s2, settings_.contact.friction, subDt);
+    }
+    ++(wall ? statistics_.wallContacts : statistics_.contacts);
+    statistics_.maxOverlapRatio = std::max(statistics_.maxOverlapRatio, -gap / aMin);
+  }
+
+  if (settings_.mode == CollisionMode::lubricationContact && settings_.viscosity > 0) {
+    const Scalar r1 = b1.shape.curvatureRadii(p1).gaussian;
+    const Scalar r2 = wall ? kInf : bodies[j].shape.curvatureRadii(p2).gaussian;
+    const Scalar c = wall ? wallLubricationCoefficient(gap, r1, settings_.viscosity,
+                                                       settings_.lubrication)
+                          : pairLubricationCoefficient(gap, r1, r2, settings_.viscosity,
+                                                       settings_.lubrication);
+    if (c > 0) {
+      f2 -= c * un * n;
+      ++statistics_.lubricated;
+    }
+  }
+
+  if (f2.squaredNorm() == 0) return;
+  force[i] -= f2;
+  torque[i] -= s1.arm.cross(f2);
+  if (!wall) {
+    force[j] += f2;
+    torque[j] += s2.arm.cross(f2);
+  }
+}
+
+}  // namespace collision

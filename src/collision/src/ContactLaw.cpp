@@ -1,0 +1,62 @@
+#include "collision/ContactLaw.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace collision {
+
+namespace {
+constexpr Scalar kPi = 3.14159265358979323846;
+}
+
+void ContactParameters::validate() const {
+  if (!(std::isfinite(restitution) && restitution > 0 && restitution <= 1)) {
+    throw std::invalid_argument("contact: restitution = " + std::to_string(restitution) +
+                                " must be in (0, 1]");
+  }
+  if (!(std::isfinite(friction) && friction >= 0)) {
+    throw std::invalid_argument("contact: friction = " + std::to_string(friction) +
+                                " must be >= 0");
+  }
+}
+
+Scalar inverseEffectiveMass(const ContactSide& s1, const ContactSide& s2, const Vec3& d) {
+  Scalar w = 0;
+  for (const ContactSide* s : {&s1, &s2}) {
+    if (!s->movable) continue;
+    const Vec3 rxd = s->arm.cross(d);
+    w += s->inverseMass + rxd.dot(s->inverseInertia * rxd);
+  }
+  return w;
+}
+
+SpringDashpot springDashpot(Scalar effectiveMass, Scalar restitution, Scalar contactTime) {
+  const Scalar lnE = std::log(restitution);
+  SpringDashpot law;
+  law.stiffness = effectiveMass * (kPi * kPi + lnE * lnE) / (contactTime * contactTime);
+  law.damping = -2 * effectiveMass * lnE / contactTime;
+  return law;
+}
+
+Vec3 contactForce(Scalar delta, const Vec3& n, const Vec3& relativeVelocity,
+                  const SpringDashpot& law, const ContactSide& s1, const ContactSide& s2,
+                  Scalar friction, Scalar dt) {
+  const Scalar un = relativeVelocity.dot(n);
+  const Scalar fn = law.stiffness * delta - law.damping * un;
+  Vec3 force = fn * n;
+  if (friction > 0) {
+    const Vec3 ut = relativeVelocity - un * n;
+    const Scalar slip = ut.norm();
+    if (slip > 0) {
+      const Vec3 t = ut / slip;
+      const Scalar wt = inverseEffectiveMass(s1, s2, t);
+      const Scalar stop = wt > 0 ? slip / (wt * dt) : 0;
+      // on body 2 the friction opposes its slip relative to body 1
+      force -= std::min(friction * std::abs(fn), stop) * t;
+    }
+  }
+  return force;
+}
+
+}  // namespace collision

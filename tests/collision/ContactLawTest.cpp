@@ -1,0 +1,67 @@
+#include "collision/ContactLaw.hpp"
+#include "collision/PlaneWall.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace collision;
+
+TEST(ContactLaw, EffectiveMassOfAHeadOnPairIsTheReducedMass) {
+  ContactSide s1{true, 1 / 2.0, Mat3::Identity(), Vec3(0.5, 0, 0)};
+  ContactSide s2{true, 1 / 3.0, Mat3::Identity(), Vec3(-0.5, 0, 0)};
+  EXPECT_NEAR(1 / inverseEffectiveMass(s1, s2, Vec3::UnitX()), 2.0 * 3.0 / 5.0, 1e-15);
+  ContactSide wall;  // immovable
+  EXPECT_NEAR(1 / inverseEffectiveMass(s1, wall, Vec3::UnitX()), 2.0, 1e-15);
+  // off the centre line the rotation lowers the effective mass
+  s1.arm = Vec3(0.5, 0.3, 0);
+  EXPECT_LT(1 / inverseEffectiveMass(s1, wall, Vec3::UnitX()), 2.0);
+}
+
+TEST(ContactLaw, DampedOscillatorLeavesWithTheRestitution) {
+  // the analytic damped oscillator of the law: exit speed / impact speed = e
+  for (Scalar e : {1.0, 0.97, 0.5, 0.1}) {
+    const Scalar m = 2, tc = 1e-3;
+    const SpringDashpot law = springDashpot(m, e, tc);
+    const Scalar w0 = std::sqrt(law.stiffness / m), z = law.damping / (2 * m);
+    const Scalar wd = std::sqrt(w0 * w0 - z * z);
+    EXPECT_NEAR(M_PI / wd, tc, 1e-12 * tc) << e;       // the contact lasts T_c
+    EXPECT_NEAR(std::exp(-z * M_PI / wd), e, 1e-12) << e;  // and returns e
+  }
+}
+
+TEST(ContactLaw, FrictionOpposesSlipAndNeverReversesItInAStep) {
+  ContactSide s1{true, 1.0, Mat3::Identity() * 2.5, Vec3(0, 0, -1)};
+  ContactSide wall;
+  const SpringDashpot law{1e4, 0};
+  const Vec3 n = -Vec3::UnitZ();  // from body 1 to the wall below
+  const Vec3 relative(-1e-3, 0, 0);  // wall relative to body: body slides along +x
+  // on the wall (body 2) the friction acts along the body's slip, on the body against it
+  const Vec3 f = contactForce(1e-3, n, relative, law, s1, wall, 0.5, 1e-3);
+  EXPECT_NEAR(f.z(), -10, 1e-12);
+  EXPECT_GT(f.x(), 0);
+  const Scalar wt = inverseEffectiveMass(s1, wall, Vec3::UnitX());
+  EXPECT_NEAR(f.x(), std::min(0.5 * 10, 1e-3 / (wt * 1e-3)), 1e-12);
+}
+
+TEST(PlaneWall, SpheroidDistanceMatchesSampling) {
+  const Quat q(Eigen::AngleAxis<Scalar>(0.7, Vec3(1, 2, 3).normalized()));
+  const ellipsoids::Ellipsoid e(Vec3(3, 1, 0.5), Vec3(0.2, -0.1, 4), q);
+  PlaneWall w{"floor", Vec3(0, 0, 0.5), Vec3(0, 0.6, 0.8)};
+  w.validate();
+  const WallDistance d = wallDistance(e, w);
+  Scalar best = 1e300;
+  for (int i = 0; i <= 400; ++i)
+    for (int j = 0; j < 800; ++j) {
+      const Scalar th = M_PI * i / 400, ph = 2 * M_PI * j / 800;
+      const Vec3 u(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th));
+      const Vec3 x = e.centre() + e.rotation() * e.semiAxes().cwiseProduct(u);
+      best = std::min(best, w.normal.dot(x - w.point));
+    }
+  EXPECT_NEAR(d.distance, best, 1e-3);
+  EXPECT_LE(d.distance, best + 1e-12);
+  EXPECT_NEAR(e.levelSet(d.bodyPoint), 0, 1e-12);
+  EXPECT_NEAR(w.normal.dot(d.wallPoint - w.point), 0, 1e-12);
+  PlaneWall bad{"bad", Vec3::Zero(), Vec3(0, 0, 2)};
+  EXPECT_THROW(bad.validate(), std::invalid_argument);
+}

@@ -3,9 +3,10 @@
 (called by `stokesDrag.py plot`; Debian's python3 with numpy and matplotlib).
 
 Box-size correction: for each body and flow direction, the box series
-(L/D = 4, 6, 8 at 12 cells per D_eq) is fitted with
-    1/K(L) = a + b (D/L) + c (D/L)^3          (Hasimoto-type; exact through 3 points)
-K_inf = 1/a. The correction of a run in a box L is then
+(L/D = 4, 6 and for the sphere 8, at 12 cells per D_eq) is fitted with
+    1/K(L) = a + b (D/L) + c (D/L)^3          (Hasimoto-type)
+with b fixed at Hasimoto's lattice sum (a and c fitted); K_inf = 1/a. The
+sphere's three sizes also give b free, the check of b. The correction of a run in a box L is then
     1/K_inf = 1/K(L) - b (D/L) - c (D/L)^3,
 applied to the resolution series (one box size, other viscous number):
 the leading coefficient b is universal (Hasimoto's lattice sum:
@@ -39,19 +40,23 @@ def box_fits(rows, lam):
         series = sorted((r for r in rows if r["body"] == body and f(r, "cpd") == 12
                          and f(r, "lambda") == lam), key=lambda r: f(r, "L_over_D"))
         Ls = sorted({f(r, "L_over_D") for r in series})
-        if len(Ls) < 3:
+        if len(Ls) < 2:
             continue
         for d in "xy":
             x = np.array([1 / f(r, "L_over_D") for r in series])
             y = np.array([1 / f(r, f"K{d}") for r in series])
-            A = np.vstack([np.ones_like(x), x, x ** 3]).T
-            (a, b, c), *_ = np.linalg.lstsq(A, y, rcond=None)
-            # with b fixed at Hasimoto's value: a and c by least squares (a check)
+            # b fixed at Hasimoto's value (the lattice sum, any body): a and c
+            # through the box sizes (exact through 2, least squares beyond)
             A2 = np.vstack([np.ones_like(x), x ** 3]).T
             (a2, c2), *_ = np.linalg.lstsq(A2, y - sd.HASIMOTO_B * x, rcond=None)
-            fits[(body, d)] = dict(a=a, b=b, c=c, K_inf=1 / a, a_fixed_b=a2, c_fixed_b=c2,
-                                   K_inf_fixed_b=1 / a2, L=[1 / v for v in x],
-                                   K=[1 / v for v in y])
+            fit = dict(a=a2, b=sd.HASIMOTO_B, c=c2, K_inf=1 / a2, a_fixed_b=a2, c_fixed_b=c2,
+                       K_inf_fixed_b=1 / a2, L=[1 / v for v in x], K=[1 / v for v in y],
+                       b_free=float("nan"), c_free=float("nan"), K_inf_free=float("nan"))
+            if len(Ls) >= 3:   # the check: b free (exact through 3 sizes)
+                A = np.vstack([np.ones_like(x), x, x ** 3]).T
+                (a, b, c), *_ = np.linalg.lstsq(A, y, rcond=None)
+                fit.update(b_free=b, c_free=c, K_inf_free=1 / a)
+            fits[(body, d)] = fit
     return fits
 
 
@@ -105,22 +110,26 @@ def main(runs_csv, out):
 
     # 2. box size
     md += [f"## Box size (12 cells per D_eq, lambda = {sd.LAMBDA_BOX:g})", "",
-           "1/K = a + b (D/L) + c (D/L)^3 through L/D = 4, 6, 8; K_inf = 1/a. Hasimoto's b = "
-           f"{sd.HASIMOTO_B:.4f} for any body; K_inf(b fixed): a, c by least squares with b = "
-           f"{sd.HASIMOTO_B:.4f}.", "",
-           "| body | flow | K(4) | K(6) | K(8) | b | c | K_inf | K_inf (b fixed) | analytic | "
-           "error of K_inf |",
+           "1/K = a + b (D/L) + c (D/L)^3 with Hasimoto's b = "
+           f"{sd.HASIMOTO_B:.4f} (the lattice sum, any body); a and c through the box sizes; "
+           "K_inf = 1/a. For the sphere (three sizes) b free as the check, and c against "
+           f"Hasimoto's pi/6 = {math.pi / 6:.4f}.", "",
+           "| body | flow | K(4) | K(6) | K(8) | c | K_inf | analytic | error of K_inf | "
+           "b free | K_inf (b free) |",
            "|---|---|---|---|---|---|---|---|---|---|---|"]
     fit_rows = []
     for (body, d), fit in fits.items():
         ka = sd.analytic_K(sd.BODIES[body])["xy".index(d)]
-        md.append(f"| {LABEL[body]} | {DIRS[d]} | " + " | ".join(f"{k:.4f}" for k in fit["K"])
-                  + f" | {fit['b']:.3f} | {fit['c']:.3f} | {fit['K_inf']:.4f} | "
-                  f"{fit['K_inf_fixed_b']:.4f} | {ka:.4f} | {fit['K_inf'] / ka - 1:+.1%} |")
+        byL = dict(zip(fit["L"], fit["K"]))
+        ks = " | ".join(f"{byL[L]:.4f}" if any(abs(L - l) < 1e-9 for l in byL) else "-"
+                        for L in (4.0, 6.0, 8.0))
+        md.append(f"| {LABEL[body]} | {DIRS[d]} | {ks} | {fit['c']:.3f} | {fit['K_inf']:.4f} | "
+                  f"{ka:.4f} | {fit['K_inf'] / ka - 1:+.1%} | {fit['b_free']:.3f} | "
+                  f"{fit['K_inf_free']:.4f} |")
         fit_rows.append(dict(body=body, flow=d, a=f"{fit['a']:.6f}", b=f"{fit['b']:.6f}",
                              c=f"{fit['c']:.6f}", K_inf=f"{fit['K_inf']:.6f}",
-                             K_inf_fixed_b=f"{fit['K_inf_fixed_b']:.6f}", K_analytic=f"{ka:.6f}",
-                             error=f"{fit['K_inf'] / ka - 1:.5f}"))
+                             b_free=f"{fit['b_free']:.6f}", K_inf_free=f"{fit['K_inf_free']:.6f}",
+                             K_analytic=f"{ka:.6f}", error=f"{fit['K_inf'] / ka - 1:.5f}"))
     md.append("")
     if fit_rows:
         with open(os.path.join(out, "boxFit.csv"), "w", newline="") as fh:

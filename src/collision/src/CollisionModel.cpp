@@ -132,6 +132,9 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
     centres_[i] = e.centre();
     radii_[i] = e.maxSemiAxis() + reach_[i];
   }
+  // the prefilter's grown bodies, once per body (not per pair)
+  grown_.clear();
+  for (int i = 0; i < n; ++i) grown_.push_back(grown(bodies[i].shape, reach_[i]));
   nextDirection_.clear();
   nextContactTime_.clear();
 
@@ -141,7 +144,7 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
     const ellipsoids::Ellipsoid& e1 = bodies[i].shape;
     const ellipsoids::Ellipsoid& e2 = bodies[j].shape;
     if (!bodies[i].movable && !bodies[j].movable) continue;
-    if (overlap_.test(grown(e1, reach_[i]), grown(e2, reach_[j])) ==
+    if (overlap_.test(grown_[i], grown_[j]) ==
         ellipsoids::OverlapStatus::separated) {
       ++statistics_.prefilterRejected;
       continue;

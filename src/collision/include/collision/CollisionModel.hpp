@@ -157,6 +157,7 @@ class CollisionModel {
   std::vector<Vec3> centres_;
   std::vector<Scalar> radii_;
   std::vector<Scalar> reach_;
+  std::vector<ellipsoids::Ellipsoid> grown_;
   /// warm-start direction of each pair seen last call
   std::unordered_map<std::uint64_t, Vec3> direction_, nextDirection_;
   /// contact time of each pair in contact

@@ -218,3 +218,52 @@ TEST(DryCollision, DeepOverlapAtStartAndTinyGapsWithLubricationStayFinite) {
   }
   EXPECT_GT(model.statistics().lubricated, 0);
 }
+
+TEST(DryCollision, RestartFromTheHistoryContinuesBitwiseAsTheUninterruptedRun) {
+  // a spheroid pair and a wall contact, stopped mid-contact: a new model given
+  // history() continues exactly as the model that kept it
+  auto scene = [] {
+    std::vector<RigidBody> b{sphere(1e-3, Vec3(0, 0, 1.1e-3), Vec3(0.1, 0, -3)),
+                             sphere(0.8e-3, Vec3(1.9e-3, 0, 1.2e-3), Vec3(-0.3, 0, -0.1))};
+    b[1].semiAxes = Vec3(1.2e-3, 0.6e-3, 0.6e-3);
+    b[1].orientation = Quat(Eigen::AngleAxis<Scalar>(0.4, Vec3(0, 1, 1).normalized()));
+    return b;
+  };
+  const std::vector<PlaneWall> walls{PlaneWall{"floor", Vec3::Zero(), Vec3::UnitZ()}};
+  CollisionSettings s = contactOnly(0.7);
+  s.contact.friction = 0.2;
+  const Scalar dt = 2e-5;
+  const Scalar tc = 8 * dt;
+
+  std::vector<RigidBody> a = scene();
+  CollisionModel uninterrupted(s, walls);
+  std::vector<RigidBody> b = scene();
+  CollisionModel first(s, walls);
+  int k = 0;
+  for (; k < 400 && first.activeContacts() < 1; ++k) {
+    collisionStep(a, uninterrupted, tc, dt);
+    collisionStep(b, first, tc, dt);
+  }
+  ASSERT_EQ(first.activeContacts(), 1u) << "the sphere should touch the wall first";
+  const std::vector<PairRecord> saved = first.history();
+  ASSERT_GE(saved.size(), 1u);
+  CollisionModel restarted(s, walls);
+  restarted.setHistory(saved);
+  EXPECT_EQ(restarted.activeContacts(), 1u);
+  long pairContacts = 0;
+  for (int m = 0; m < 200; ++m) {
+    collisionStep(a, uninterrupted, tc, dt);
+    collisionStep(b, restarted, tc, dt);
+  }
+  pairContacts = restarted.statistics().contacts;
+  EXPECT_GT(pairContacts, 0) << "the continuation should include the body-body contact";
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_EQ(a[i].centre, b[i].centre);
+    EXPECT_EQ(a[i].velocity, b[i].velocity);
+    EXPECT_EQ(a[i].angularVelocity, b[i].angularVelocity);
+  }
+  PairRecord bad;
+  bad.first = 1;
+  bad.second = 0;
+  EXPECT_THROW(restarted.setHistory({bad}), std::invalid_argument);
+}

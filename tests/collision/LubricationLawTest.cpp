@@ -23,7 +23,7 @@ TEST(LubricationLaw, LargeSecondSphereTendsToTheWall) {
   EXPECT_NEAR(pair / wall, 1 - 2 * a1 / a2, 2e-5);
 }
 
-TEST(LubricationLaw, CoefficientIsZeroBeyondActivationContinuousAtItAndFrozenBelowSaturation) {
+TEST(LubricationLaw, CoefficientIsZeroBeyondActivationContinuousAtItFrozenBelowSaturationOffInContact) {
   LubricationParameters p;
   const Scalar a = 0.5, mu = 2e-3;
   // pair (equal radii: xi = h/a)
@@ -33,7 +33,12 @@ TEST(LubricationLaw, CoefficientIsZeroBeyondActivationContinuousAtItAndFrozenBel
   const Scalar sat = pairLubricationCoefficient(p.saturation * a, a, a, mu, p);
   EXPECT_GT(sat, 0);
   EXPECT_EQ(pairLubricationCoefficient(0.1 * p.saturation * a, a, a, mu, p), sat);
-  EXPECT_EQ(pairLubricationCoefficient(-0.2 * a, a, a, mu, p), sat);
+  EXPECT_EQ(pairLubricationCoefficient(0, a, a, mu, p), sat);
+  // in contact the spring-dashpot acts alone
+  EXPECT_EQ(pairLubricationCoefficient(-0.2 * a, a, a, mu, p), 0);
+  EXPECT_EQ(pairLubricationCoefficient(-1e-12 * a, a, a, mu, p), 0);
+  EXPECT_EQ(wallLubricationCoefficient(-1e-6 * a, a, mu, p), 0);
+  EXPECT_GT(wallLubricationCoefficient(0, a, mu, p), 0);
   // grows monotonically as the gap closes
   Scalar last = 0;
   for (Scalar e = p.pairActivation; e >= p.saturation; e *= 0.8) {

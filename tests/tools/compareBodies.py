@@ -1,11 +1,14 @@
 """Compare the body time series (postProcessing/immersedBodies/bodies.h5) of two runs.
 
     compareBodies.py CASE_A CASE_B [--rtol R] [--from-time T] [--min-rows N]
+                     [--scale-floor QUANTITY=VALUE ...]
 
 At every time both series have (to 1e-9 relative), the centres, orientations, velocities,
 angular velocities and hydrodynamic forces of every body must agree:
 |a - b| <= rtol * scale, with scale the largest magnitude of that quantity over run A
-(the centre: the largest displacement from the first row; the orientation: 1).
+(the centre: the largest displacement from the first row; the orientation: 1), or the
+floor given for it (for a quantity that is zero by symmetry and only round-off otherwise,
+e.g. --scale-floor angularVelocity=1e-3).
 Prints the largest differences; exit 1 on a mismatch or when fewer than --min-rows times
 are shared, 2 on bad usage.
 """
@@ -36,7 +39,14 @@ def main():
     ap.add_argument("--rtol", type=float, default=1e-6)
     ap.add_argument("--from-time", type=float, default=-np.inf)
     ap.add_argument("--min-rows", type=int, default=2)
+    ap.add_argument("--scale-floor", action="append", default=[])
     args = ap.parse_args()
+    floors = {}
+    for item in args.scale_floor:
+        name, _, value = item.partition("=")
+        if name not in QUANTITIES or not value:
+            ap.error(f"--scale-floor {item}: expected QUANTITY=VALUE, QUANTITY one of {QUANTITIES}")
+        floors[name] = float(value)
     na, a = read(args.a)
     nb, b = read(args.b)
     if na != nb:
@@ -66,6 +76,7 @@ def main():
             vb = vb * np.where(sign == 0, 1, sign)
         else:
             scale = np.max(np.abs(a[q]))
+        scale = max(scale, floors.get(q, 0.0))
         diff = np.max(np.abs(va - vb)) if va.size else 0.0
         rel = diff / scale if scale > 0 else diff
         good = rel <= args.rtol

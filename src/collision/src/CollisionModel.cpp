@@ -82,6 +82,45 @@ void CollisionModel::clearHistory() {
   contactTime_.clear();
 }
 
+std::vector<PairRecord> CollisionModel::history() const {
+  std::unordered_map<std::uint64_t, PairRecord> merged;
+  auto record = [&merged](std::uint64_t k) -> PairRecord& {
+    PairRecord& r = merged[k];
+    r.first = static_cast<int>(static_cast<std::uint32_t>(k >> 32));
+    r.second = static_cast<int>(static_cast<std::uint32_t>(k & 0xffffffffu));
+    return r;
+  };
+  for (const auto& [k, d] : direction_) {
+    PairRecord& r = record(k);
+    r.warm = true;
+    r.direction = d;
+  }
+  for (const auto& [k, tc] : contactTime_) record(k).contactTime = tc;
+  std::vector<PairRecord> out;
+  out.reserve(merged.size());
+  for (const auto& kv : merged) out.push_back(kv.second);
+  std::sort(out.begin(), out.end(), [](const PairRecord& a, const PairRecord& b) {
+    return a.first != b.first ? a.first < b.first : a.second < b.second;
+  });
+  return out;
+}
+
+void CollisionModel::setHistory(const std::vector<PairRecord>& records) {
+  clearHistory();
+  for (const PairRecord& r : records) {
+    const std::string pair = "(" + std::to_string(r.first) + " " + std::to_string(r.second) + ")";
+    require(r.first >= 0 && (r.second > r.first ||
+                             (r.second < 0 && -1 - r.second < static_cast<int>(walls_.size()))),
+            "pair history " + pair + ": second must be a body index > first or -1 - wall index");
+    require(std::isfinite(r.contactTime) && r.contactTime >= 0,
+            "pair history " + pair + ": contact time must be >= 0");
+    require(!r.warm || (r.direction.allFinite() && r.direction.norm() > 0),
+            "pair history " + pair + ": the warm-start direction must be finite and non-zero");
+    if (r.warm) direction_[key(r.first, r.second)] = r.direction;
+    if (r.contactTime > 0) contactTime_[key(r.first, r.second)] = r.contactTime;
+  }
+}
+
 int CollisionModel::subSteps(const std::vector<CollisionBody>& bodies, Scalar dt,
                              Scalar contactTime) const {
   if (settings_.mode == CollisionMode::none || bodies.empty()) return 1;
@@ -102,6 +141,8 @@ int CollisionModel::subSteps(const std::vector<CollisionBody>& bodies, Scalar dt
   const Scalar vRel = 2 * speed;
   Scalar tc = contactTime;
   if (vRel > 0) tc = std::min(tc, kPi * settings_.maxOverlap * aMin / vRel);
+  // the contacts under way keep the contact time they started with
+  for (const auto& kv : contactTime_) tc = std::min(tc, kv.second);
   const Scalar n = std::ceil(dt * settings_.subStepsPerContact / tc - 1e-9);
   if (!(n <= settings_.maxSubSteps)) {
     throw std::runtime_error("collision: " + std::to_string(n) +

@@ -44,7 +44,7 @@ Scalar pairLubricationCoefficient(Scalar gap, Scalar a1, Scalar a2, Scalar visco
                                   const LubricationParameters& p) {
   if (!std::isfinite(a2)) return wallLubricationCoefficient(gap, a1, viscosity, p);
   const Scalar xi = 2 * gap / (a1 + a2);
-  if (xi >= p.pairActivation) return 0;
+  if (xi >= p.pairActivation || gap < 0) return 0;
   const Scalar xiEff = std::max(xi, p.saturation);
   return 6 * kPi * viscosity * a1 *
          (pairLubricationLambda(xiEff, a1, a2) - pairLubricationLambda(p.pairActivation, a1, a2));
@@ -53,7 +53,7 @@ Scalar pairLubricationCoefficient(Scalar gap, Scalar a1, Scalar a2, Scalar visco
 Scalar wallLubricationCoefficient(Scalar gap, Scalar a, Scalar viscosity,
                                   const LubricationParameters& p) {
   const Scalar eps = gap / a;
-  if (eps >= p.wallActivation) return 0;
+  if (eps >= p.wallActivation || gap < 0) return 0;
   const Scalar epsEff = std::max(eps, p.saturation);
   return 6 * kPi * viscosity * a *
          (wallLubricationLambda(epsEff) - wallLubricationLambda(p.wallActivation));

@@ -183,6 +183,7 @@ bool Foam::immersedBodies::readRestartState()
         }
         body.readState(states.subDict(body.name()));
     }
+    collision_->readHistory(dict);
     return true;
 }
 
@@ -241,7 +242,7 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         wordList
         ({
             "fluidDensity", "U", "penaltyRatio", "subSteps", "virtualMass", "bodies",
-            "packing", "output"
+            "packing", "output", "collision"
         })
     );
     fluidDensity_ = readPositive
@@ -296,6 +297,7 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
 
     readBodies();
     readGravity();
+    collision_ = collisionModel::New(properties_, mesh_, fluidDensity_);
     ddtScheme_ = immersedSpheroids::ddtCoefficients::read(mesh, UName_);
 
     if (!readRestartState())

@@ -116,68 +116,130 @@ void Foam::immersedBodies::computeForces(const volVectorField& U)
 }
 
 
+Foam::Pair<Foam::vector> Foam::immersedBodies::advanceBody
+(
+    const immersedBody& body,
+    bodyState& state,
+    const scalar t,
+    const scalar subDt,
+    const vector& Fc,
+    const vector& Tc
+) const
+{
+    const vector F =
+        body.hydroForce() + (body.density() - fluidDensity_)*body.volume()*g_;
+    const vector& T = body.hydroTorque();
+
+    // virtual-mass stabilisation (Schwarz, Kempe and Froehlich 2015) of the
+    // hydrodynamic force: C_v rho_f V (dU/dt) on both sides, implicit on the
+    // left (mass and inertia scaled by 1 + beta), explicit with the last
+    // sub-step's hydrodynamic acceleration on the right. The collision force
+    // acts on the body's own mass: its impulse is scaled by 1 + beta too.
+    const scalar beta = virtualMass_*fluidDensity_/body.density();
+    const vector U0 = state.velocity;
+    const vector W0 = state.angularVelocity;
+    vector impulse = (F + (1 + beta)*Fc)*subDt;
+    vector angularImpulse = (T + (1 + beta)*Tc)*subDt;
+    if (beta > 0)
+    {
+        impulse += beta*body.mass()*body.acceleration()*subDt;
+        angularImpulse +=
+            beta*subDt
+           *(
+                bodyMotions::worldInertia(state.orientation, body.bodyInertia())
+              & body.angularAcceleration()
+            );
+    }
+
+    body.motion().advance
+    (
+        state,
+        t,
+        subDt,
+        impulse,
+        angularImpulse,
+        (1 + beta)*body.mass(),
+        (1 + beta)*body.bodyInertia()
+    );
+
+    // the hydrodynamic accelerations (without the collision force's)
+    vector a = (state.velocity - U0)/subDt;
+    vector alpha = (state.angularVelocity - W0)/subDt;
+    if (body.motion().isFreeInTranslation())
+    {
+        a -= Fc/body.mass();
+    }
+    if (body.motion().isFreeInRotation())
+    {
+        alpha -=
+            bodyMotions::inverseWorldInertia(state.orientation, body.bodyInertia())
+          & Tc;
+    }
+    return Pair<vector>(a, alpha);
+}
+
+
 void Foam::immersedBodies::advanceBodies(const scalar t0, const scalar dt)
 {
-    const scalar subDt = dt/subSteps_;
+    const label nBodies = bodies_.size();
+    const bool colliding = collision_->active();
+    const label nSub =
+        colliding ? max(subSteps_, collision_->subSteps(bodies_, dt)) : subSteps_;
+    const scalar subDt = dt/nSub;
 
-    for (label stepi = 0; stepi < subSteps_; ++stepi)
+    // collision forces at the start and the predicted end of a sub-step
+    vectorField Fc(nBodies, Zero), Tc(nBodies, Zero);
+    vectorField Fc1, Tc1;
+    vectorField FcMean(nBodies, Zero), TcMean(nBodies, Zero);
+    List<bodyState> states(nBodies);
+
+    for (label stepi = 0; stepi < nSub; ++stepi)
     {
         const scalar t = t0 + stepi*subDt;
 
-        // (the collision model sets the bodies' collision forces here, once
-        // per sub-step)
-
-        for (immersedBody& body : bodies_)
+        if (colliding)
         {
+            // Heun: forces at the start, a predicted end state, forces there;
+            // the sub-step is taken with their mean
+            forAll(bodies_, i)
+            {
+                states[i] = bodies_[i].state();
+            }
+            collision_->forces(bodies_, states, dt, subDt, Fc, Tc);
+            forAll(bodies_, i)
+            {
+                if (bodies_[i].motion().moves())
+                {
+                    advanceBody(bodies_[i], states[i], t, subDt, Fc[i], Tc[i]);
+                }
+            }
+            collision_->forces(bodies_, states, dt, subDt, Fc1, Tc1);
+            Fc = 0.5*(Fc + Fc1);
+            Tc = 0.5*(Tc + Tc1);
+            FcMean += Fc/nSub;
+            TcMean += Tc/nSub;
+        }
+
+        forAll(bodies_, i)
+        {
+            immersedBody& body = bodies_[i];
             if (!body.motion().moves())
             {
                 continue;
             }
-            const vector F =
-                body.hydroForce()
-              + (body.density() - fluidDensity_)*body.volume()*g_
-              + body.collisionForce();
-            const vector T = body.hydroTorque() + body.collisionTorque();
-
-            // virtual-mass stabilisation (Schwarz, Kempe and Froehlich
-            // 2015): C_v rho_f V (dU/dt) on both sides, implicit on the left
-            // (mass and inertia scaled by 1 + beta), explicit with the last
-            // sub-step's acceleration on the right
-            const scalar beta = virtualMass_*fluidDensity_/body.density();
-            const vector U0 = body.state().velocity;
-            const vector W0 = body.state().angularVelocity;
-            vector impulse = F*subDt;
-            vector angularImpulse = T*subDt;
-            if (beta > 0)
-            {
-                impulse += beta*body.mass()*body.acceleration()*subDt;
-                angularImpulse +=
-                    beta*subDt
-                   *(
-                        bodyMotions::worldInertia
-                        (
-                            body.state().orientation, body.bodyInertia()
-                        )
-                      & body.angularAcceleration()
-                    );
-            }
-
-            body.motion().advance
-            (
-                body.state(),
-                t,
-                subDt,
-                impulse,
-                angularImpulse,
-                (1 + beta)*body.mass(),
-                (1 + beta)*body.bodyInertia()
-            );
-            body.setAccelerations
-            (
-                (body.state().velocity - U0)/subDt,
-                (body.state().angularVelocity - W0)/subDt
-            );
+            const Pair<vector> acc =
+                advanceBody(body, body.state(), t, subDt, Fc[i], Tc[i]);
+            body.setAccelerations(acc.first(), acc.second());
         }
+    }
+
+    if (colliding)
+    {
+        forAll(bodies_, i)
+        {
+            bodies_[i].setCollision(FcMean[i], TcMean[i]);
+        }
+        collision_->report(nSub);
     }
 }
 

@@ -29,6 +29,7 @@ bool Foam::immersedBodies::writeData(Ostream& os) const
         os.endBlock();
     }
     os.endBlock();
+    collision_->writeHistory(os);
 
     os.precision(oldPrecision);
     return os.good();

@@ -24,8 +24,8 @@
  *     of the linear law stays below v T_c/pi <= maxOverlap a_min, so that fast
  *     bodies cannot pass through each other or a wall;
  *  5. lubrication (LubricationLaw) with the Gaussian curvature radii at the
- *     closest points, between the activation and saturation gaps, and kept at
- *     its saturated value in contact;
+ *     closest points, between the activation and saturation gaps, held at its
+ *     saturated value down to touching and off in contact (overlap);
  *  6. walls: exact spheroid-plane distances (PlaneWall), the same laws with a
  *     fixed, infinitely heavy wall.
  * subSteps() gives the number of body sub-steps a fluid step needs so that a
@@ -105,6 +105,15 @@ struct CollisionStatistics {
   Scalar maxOverlapRatio = 0;     ///< max overlap / smallest semi-axis of the pair
 };
 
+/// What the model remembers of one pair between calls (the restart state).
+struct PairRecord {
+  int first = 0;                  ///< body index
+  int second = 0;                 ///< body index (> first), or -1 - wall index
+  bool warm = false;              ///< has a warm-start direction (body pairs)
+  Vec3 direction = Vec3::Zero();  ///< the pair's last distance direction
+  Scalar contactTime = 0;         ///< > 0: in contact, with this contact time
+};
+
 class CollisionModel {
  public:
   /// @throws std::invalid_argument on invalid settings or walls
@@ -115,8 +124,9 @@ class CollisionModel {
 
   /**
    * Sub-steps a fluid step dt needs (>= 1): dt/subSteps <= T_c,min/subStepsPerContact
-   * with T_c,min the contact time of the fastest possible impact (twice the
-   * largest body speed plus rotation). 1 when the mode is none.
+   * with T_c,min the shorter of the contact time of the fastest possible impact
+   * (twice the largest body speed plus rotation) and the contact times of the
+   * contacts under way. 1 when the mode is none.
    * @throws std::runtime_error if more than maxSubSteps would be needed
    */
   int subSteps(const std::vector<CollisionBody>& bodies, Scalar dt, Scalar contactTime) const;
@@ -135,6 +145,12 @@ class CollisionModel {
 
   /// Forget the warm starts and contact histories (e.g. after bodies were moved by hand).
   void clearHistory();
+
+  /// The pairs' warm starts and contact times, sorted by (first, second).
+  std::vector<PairRecord> history() const;
+  /// Restore history() (e.g. on restart).
+  /// @throws std::invalid_argument on a record with bad indices or values
+  void setHistory(const std::vector<PairRecord>& records);
 
   /// Pairs in contact now (body-body and body-wall; walls are -1 - wall index).
   std::size_t activeContacts() const { return contactTime_.size(); }

@@ -18,7 +18,7 @@
  * activation gap (xi_act, eps_act) the unresolved part
  *     F = -6 pi mu a1 [lambda(max(xi, xi_sat)) - lambda(xi_act)] u
  * is added, frozen below the saturation gap xi_sat (surface roughness; the
- * founding paper's eps_1 = 1e-3), so that it stays finite in contact.
+ * founding paper's eps_1 = 1e-3), so that it stays finite; off in contact.
  * For spheroids (Ardekani et al. 2016) a1, a2 are the Gaussian curvature
  * radii of the bodies at their closest points (a plane: infinite).
  */
@@ -52,8 +52,10 @@ Scalar wallLubricationLambda(Scalar eps);
  * on body 2 F_2 = -F_1, with n the unit normal from 1 to 2 and u = (v_2 - v_1).n
  * the normal relative speed at the closest points (negative when approaching:
  * the force then pushes the bodies apart; when separating it holds them).
- * Zero at and beyond the activation gap; a gap below the saturation gap,
- * contact included (gap <= 0), counts as the saturation gap.
+ * Zero at and beyond the activation gap; a gap in [0, saturation gap) counts as
+ * the saturation gap; zero in contact (gap < 0), where the spring-dashpot law
+ * alone acts (as in Costa et al. 2015: a lubrication force held through the
+ * contact would damp the rebound a second time).
  * @param gap  surface gap h (any sign)
  * @param a1, a2 the curvature radii (a2 = infinity for a plane)
  */

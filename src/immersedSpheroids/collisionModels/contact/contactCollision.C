@@ -1,0 +1,478 @@
+/*---------------------------------------------------------------------------*\
+  spheroidFoam: particle-resolved flows of immersed spheroids for OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later (as OpenFOAM).
+\*---------------------------------------------------------------------------*/
+
+#include "contactCollision.H"
+#include "immersedBody.H"
+#include "freeMotion.H"
+#include "planeWalls.H"
+#include "dictionaryChecks.H"
+#include "IOdictionary.H"
+#include "dimensionedScalar.H"
+#include "addToRunTimeSelectionTable.H"
+
+#include <limits>
+#include <stdexcept>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace collisionModels
+{
+    defineTypeNameAndDebug(contact, 0);
+    addToRunTimeSelectionTable(collisionModel, contact, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- An optional scalar in [lo, hi]
+scalar optionalInRange
+(
+    const dictionary& dict,
+    const word& keyword,
+    const scalar deflt,
+    const scalar lo,
+    const scalar hi,
+    const string& expected
+)
+{
+    const scalar v =
+        immersedSpheroids::readCheckedOrDefault<scalar>(dict, keyword, deflt, expected);
+    if (!(v >= lo && v <= hi))
+    {
+        immersedSpheroids::entryError
+        (
+            dict, keyword,
+            "is " + Foam::name(v) + "; allowed: " + expected
+        );
+    }
+    return v;
+}
+
+//- The dynamic viscosity: the viscosity entry, else rho_f nu of
+//  constant/transportProperties
+scalar readViscosity
+(
+    const dictionary& dict,
+    const fvMesh& mesh,
+    const scalar fluidDensity
+)
+{
+    const string expected =
+        "the dynamic viscosity mu [Pa s] > 0 (default: fluidDensity x nu of"
+        " constant/transportProperties)";
+    if (dict.found("viscosity"))
+    {
+        return immersedSpheroids::readPositive(dict, "viscosity", expected);
+    }
+    IOdictionary transport
+    (
+        IOobject
+        (
+            "transportProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    if (!transport.found("nu"))
+    {
+        immersedSpheroids::entryError
+        (
+            dict, "viscosity",
+            "is missing and " + transport.objectPath()
+          + " has no entry nu; expected " + expected
+        );
+    }
+    const dimensionedScalar nu("nu", dimViscosity, transport);
+    if (!(nu.value() > 0))
+    {
+        immersedSpheroids::entryError
+        (
+            transport, "nu", "must be > 0 for the lubrication force"
+        );
+    }
+    return fluidDensity*nu.value();
+}
+
+collision::Vec3 toEigen(const vector& v)
+{
+    return collision::Vec3(v.x(), v.y(), v.z());
+}
+
+vector toFoam(const collision::Vec3& v)
+{
+    return vector(v.x(), v.y(), v.z());
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+::collision::CollisionSettings Foam::collisionModels::contact::readSettings
+(
+    const dictionary& dict,
+    const fvMesh& mesh,
+    const scalar fluidDensity,
+    const collision::CollisionMode mode
+)
+{
+    using namespace immersedSpheroids;
+    const bool lubrication = mode == collision::CollisionMode::lubricationContact;
+
+    wordList allowed
+    ({
+        "type", "walls", "restitution", "friction", "contactSteps",
+        "subStepsPerContact", "maxOverlap", "distanceAccuracy", "maxSubSteps"
+    });
+    if (lubrication)
+    {
+        allowed.append
+        (
+            wordList({"viscosity", "pairActivation", "wallActivation", "saturation"})
+        );
+    }
+    checkKeywords(dict, allowed);
+
+    collision::CollisionSettings s;
+    s.mode = mode;
+    s.contact.restitution = optionalInRange
+    (
+        dict, "restitution", 0.97, 1e-6, 1,
+        "the dry restitution coefficient e in (0, 1] (default 0.97)"
+    );
+    s.contact.friction = optionalInRange
+    (
+        dict, "friction", 0, 0, 100,
+        "the Coulomb friction coefficient in [0, 100] (default 0)"
+    );
+    s.subStepsPerContact = label
+    (
+        optionalInRange
+        (
+            dict, "subStepsPerContact", 10, 4, 10000,
+            "the body sub-steps per contact time, an integer in [4, 10000]"
+            " (default 10)"
+        )
+    );
+    s.maxOverlap = optionalInRange
+    (
+        dict, "maxOverlap", 0.1, 1e-6, 0.5,
+        "the largest overlap over the smallest semi-axis in (0, 0.5]"
+        " (default 0.1)"
+    );
+    s.distanceAccuracy = optionalInRange
+    (
+        dict, "distanceAccuracy", 1e-5, 1e-12, 0.1,
+        "eps_d over the smallest Gaussian curvature radius of the pair, in"
+        " [1e-12, 0.1] (default 1e-5)"
+    );
+    s.maxSubSteps = label
+    (
+        optionalInRange
+        (
+            dict, "maxSubSteps", 100000, 1, 1e9,
+            "the largest number of body sub-steps per fluid step, in [1, 1e9]"
+            " (default 100000)"
+        )
+    );
+    if (lubrication)
+    {
+        s.viscosity = readViscosity(dict, mesh, fluidDensity);
+        s.lubrication.saturation = optionalInRange
+        (
+            dict, "saturation", 1e-3, 1e-12, 0.5,
+            "the saturation gap ratio eps_sat in (0, 0.5] (default 1e-3)"
+        );
+        s.lubrication.pairActivation = optionalInRange
+        (
+            dict, "pairActivation", 0.025, s.lubrication.saturation*(1 + 1e-12), 1,
+            "the pair activation gap ratio 2h/(R1 + R2) in (saturation, 1]"
+            " (default 0.025)"
+        );
+        s.lubrication.wallActivation = optionalInRange
+        (
+            dict, "wallActivation", 0.075, s.lubrication.saturation*(1 + 1e-12), 1,
+            "the wall activation gap ratio h/R in (saturation, 1]"
+            " (default 0.075)"
+        );
+    }
+    try
+    {
+        s.validate();
+    }
+    catch (const std::exception& err)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Invalid collision settings in " << dict.name() << ": "
+            << err.what() << nl << exit(FatalIOError);
+    }
+    return s;
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::collisionModels::contact::convert
+(
+    const PtrList<immersedBody>& bodies,
+    const UList<bodyState>& states
+)
+{
+    collisionBodies_.clear();
+    collisionBodies_.reserve(bodies.size());
+    forAll(bodies, i)
+    {
+        const immersedBody& body = bodies[i];
+        const bodyState& s = states[i];
+        collisionBodies_.push_back
+        (
+            collision::CollisionBody
+            {
+                ellipsoids::Ellipsoid
+                (
+                    toEigen(body.semiAxes()),
+                    toEigen(s.centre),
+                    collision::Quat
+                    (
+                        s.orientation.w(), s.orientation.v().x(),
+                        s.orientation.v().y(), s.orientation.v().z()
+                    ).normalized()
+                )
+            }
+        );
+        collision::CollisionBody& c = collisionBodies_.back();
+        c.velocity = toEigen(s.velocity);
+        c.angularVelocity = toEigen(s.angularVelocity);
+        // fixed bodies do not take part; prescribed ones are infinitely heavy
+        c.movable = body.motion().moves();
+        c.mass =
+            body.motion().isFreeInTranslation()
+          ? body.mass()
+          : std::numeric_limits<scalar>::infinity();
+        c.inverseInertia.setZero();
+        if (body.motion().isFreeInRotation())
+        {
+            const tensor Iinv =
+                bodyMotions::inverseWorldInertia(s.orientation, body.bodyInertia());
+            c.inverseInertia <<
+                Iinv.xx(), Iinv.xy(), Iinv.xz(),
+                Iinv.yx(), Iinv.yy(), Iinv.yz(),
+                Iinv.zx(), Iinv.zy(), Iinv.zz();
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::collisionModels::contact::contact
+(
+    const dictionary& dict,
+    const fvMesh& mesh,
+    const scalar fluidDensity,
+    const collision::CollisionMode mode
+)
+:
+    collisionModel(mesh),
+    contactSteps_
+    (
+        optionalInRange
+        (
+            dict, "contactSteps", 10, 1e-3, 1e6,
+            "the contact time over the fluid time step, T_c/deltaT, in"
+            " [1e-3, 1e6] (default 10)"
+        )
+    ),
+    model_
+    (
+        readSettings(dict, mesh, fluidDensity, mode),
+        immersedSpheroids::planeWalls(mesh, dict, "walls")
+    ),
+    calls_(0)
+{
+    const collision::CollisionSettings& s = model_.settings();
+    Info<< "immersedBodies: collision model " << collision::toString(s.mode)
+        << ": e " << s.contact.restitution << ", friction "
+        << s.contact.friction << ", T_c = " << contactSteps_ << " deltaT, "
+        << s.subStepsPerContact << " sub-steps per contact, max overlap "
+        << s.maxOverlap << " a_min, eps_d " << s.distanceAccuracy << " R_G";
+    if (s.mode == collision::CollisionMode::lubricationContact)
+    {
+        Info<< ", lubrication: mu " << s.viscosity << ", activation "
+            << s.lubrication.pairActivation << " (pairs) "
+            << s.lubrication.wallActivation << " (walls), saturation "
+            << s.lubrication.saturation;
+    }
+    Info<< ", walls (";
+    for (const collision::PlaneWall& w : model_.walls())
+    {
+        Info<< ' ' << w.name << " n = " << toFoam(w.normal);
+    }
+    Info<< " )" << endl;
+}
+
+
+Foam::collisionModels::contact::contact
+(
+    const dictionary& dict,
+    const fvMesh& mesh,
+    const scalar fluidDensity
+)
+:
+    contact(dict, mesh, fluidDensity, collision::CollisionMode::contact)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::collisionModels::contact::subSteps
+(
+    const PtrList<immersedBody>& bodies,
+    const scalar dt
+)
+{
+    List<bodyState> states(bodies.size());
+    forAll(bodies, i)
+    {
+        states[i] = bodies[i].state();
+    }
+    convert(bodies, states);
+    try
+    {
+        return model_.subSteps(collisionBodies_, dt, contactSteps_*dt);
+    }
+    catch (const std::exception& err)
+    {
+        FatalErrorInFunction
+            << "Collision sub-steps of the step " << dt << " s: " << err.what()
+            << nl << "    (raise maxSubSteps in the collision dictionary or"
+            << " reduce deltaT)" << nl << exit(FatalError);
+    }
+    return 1;
+}
+
+
+void Foam::collisionModels::contact::forces
+(
+    const PtrList<immersedBody>& bodies,
+    const UList<bodyState>& states,
+    const scalar dt,
+    const scalar subDt,
+    vectorField& force,
+    vectorField& torque
+)
+{
+    convert(bodies, states);
+    try
+    {
+        model_.forces(collisionBodies_, contactSteps_*dt, subDt, force_, torque_);
+    }
+    catch (const std::exception& err)
+    {
+        FatalErrorInFunction
+            << "Collision forces at time " << mesh_.time().value() << ": "
+            << err.what() << nl << exit(FatalError);
+    }
+    ++calls_;
+    force.setSize(bodies.size());
+    torque.setSize(bodies.size());
+    forAll(bodies, i)
+    {
+        force[i] = toFoam(force_[i]);
+        torque[i] = toFoam(torque_[i]);
+    }
+}
+
+
+void Foam::collisionModels::contact::report(const label nSubSteps)
+{
+    const collision::CollisionStatistics& st = model_.statistics();
+    const scalar calls = max(calls_, 1);
+    Info<< "collisions: " << nSubSteps << " sub-step(s), per evaluation "
+        << st.candidatePairs/calls << " candidate pairs, "
+        << st.prefilterRejected/calls << " out of reach by the overlap test, "
+        << st.distanceQueries/calls << " distances ("
+        << (st.distanceQueries ? scalar(st.distanceIterations)/st.distanceQueries : 0)
+        << " iterations each); in contact now " << model_.activeContacts()
+        << ", max overlap " << st.maxOverlapRatio << " a_min";
+    if (model_.settings().mode == collision::CollisionMode::lubricationContact)
+    {
+        Info<< ", lubricated " << st.lubricated/calls;
+    }
+    Info<< endl;
+    if (st.distanceNotConverged > 0)
+    {
+        WarningInFunction
+            << st.distanceNotConverged << " distance queries of this step did"
+            << " not converge to distanceAccuracy "
+            << model_.settings().distanceAccuracy
+            << "; their last iterate (certified bracket) was used" << endl;
+    }
+    model_.resetStatistics();
+    calls_ = 0;
+}
+
+
+void Foam::collisionModels::contact::readHistory(const dictionary& dict)
+{
+    const List<FixedList<scalar, 7>> records =
+        immersedSpheroids::readCheckedOrDefault<List<FixedList<scalar, 7>>>
+        (
+            dict, "collisionPairs", List<FixedList<scalar, 7>>(),
+            "a list of (first second warm dx dy dz contactTime)"
+        );
+    std::vector<collision::PairRecord> history;
+    for (const FixedList<scalar, 7>& r : records)
+    {
+        collision::PairRecord p;
+        p.first = label(r[0]);
+        p.second = label(r[1]);
+        p.warm = r[2] > 0.5;
+        p.direction = collision::Vec3(r[3], r[4], r[5]);
+        p.contactTime = r[6];
+        history.push_back(p);
+    }
+    try
+    {
+        model_.setHistory(history);
+    }
+    catch (const std::exception& err)
+    {
+        immersedSpheroids::entryError(dict, "collisionPairs", err.what());
+    }
+}
+
+
+void Foam::collisionModels::contact::writeHistory(Ostream& os) const
+{
+    const std::vector<collision::PairRecord> history = model_.history();
+    List<FixedList<scalar, 7>> records(label(history.size()));
+    forAll(records, i)
+    {
+        const collision::PairRecord& p = history[i];
+        records[i] = FixedList<scalar, 7>
+        ({
+            scalar(p.first), scalar(p.second), p.warm ? 1.0 : 0.0,
+            p.direction.x(), p.direction.y(), p.direction.z(), p.contactTime
+        });
+    }
+    os.writeEntry("collisionPairs", records);
+}
+
+
+// ************************************************************************* //

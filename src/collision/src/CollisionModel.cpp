@@ -173,9 +173,14 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
     centres_[i] = e.centre();
     radii_[i] = e.maxSemiAxis() + reach_[i];
   }
-  // the prefilter's grown bodies, once per body (not per pair)
+  // the prefilter's grown bodies and their axis-aligned boxes (half extents
+  // sqrt(P_kk)), once per body (not per pair)
   grown_.clear();
-  for (int i = 0; i < n; ++i) grown_.push_back(grown(bodies[i].shape, reach_[i]));
+  halfExtent_.resize(n);
+  for (int i = 0; i < n; ++i) {
+    grown_.push_back(grown(bodies[i].shape, reach_[i]));
+    halfExtent_[i] = grown_[i].shapeMatrix().diagonal().cwiseSqrt();
+  }
   nextDirection_.clear();
   nextContactTime_.clear();
 
@@ -185,6 +190,12 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
     const ellipsoids::Ellipsoid& e1 = bodies[i].shape;
     const ellipsoids::Ellipsoid& e2 = bodies[j].shape;
     if (!bodies[i].movable && !bodies[j].movable) continue;
+    // boxes apart (cheap), or the exact test: the grown bodies are apart
+    if (((centres_[i] - centres_[j]).cwiseAbs() - halfExtent_[i] - halfExtent_[j]).maxCoeff() > 0) {
+      ++statistics_.prefilterRejected;
+      ++statistics_.boxRejected;
+      continue;
+    }
     if (overlap_.test(grown_[i], grown_[j]) ==
         ellipsoids::OverlapStatus::separated) {
       ++statistics_.prefilterRejected;
@@ -278,7 +289,14 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
     statistics_.maxOverlapRatio = std::max(statistics_.maxOverlapRatio, -gap / aMin);
   }
 
-  if (settings_.mode == CollisionMode::lubricationContact && settings_.viscosity > 0) {
+  // lubrication; the curvature radii only when the gap is below the largest
+  // activation gap the radii allow (Gaussian radius <= largest curvature radius)
+  const Scalar rBound = b1.shape.maxOfMaxCurvatureRadius() +
+                        (wall ? 0 : bodies[j].shape.maxOfMaxCurvatureRadius());
+  const Scalar reachBound = wall ? settings_.lubrication.wallActivation * rBound
+                                 : 0.5 * settings_.lubrication.pairActivation * rBound;
+  if (settings_.mode == CollisionMode::lubricationContact && settings_.viscosity > 0 &&
+      gap >= 0 && gap < reachBound) {
     const Scalar r1 = b1.shape.curvatureRadii(p1).gaussian;
     const Scalar r2 = wall ? kInf : bodies[j].shape.curvatureRadii(p2).gaussian;
     const Scalar c = wall ? wallLubricationCoefficient(gap, r1, settings_.viscosity,

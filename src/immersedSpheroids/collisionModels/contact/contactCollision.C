@@ -258,7 +258,8 @@ void Foam::collisionModels::contact::convert
         collision::CollisionBody& c = collisionBodies_.back();
         c.velocity = toEigen(s.velocity);
         c.angularVelocity = toEigen(s.angularVelocity);
-        // fixed bodies do not take part; prescribed ones are infinitely heavy
+        // fixed bodies are immovable obstacles; prescribed ones move (their
+        // speed counts for the sub-steps) but are infinitely heavy
         c.movable = body.motion().moves();
         c.mass =
             body.motion().isFreeInTranslation()

@@ -1,0 +1,251 @@
+#!/usr/bin/python3
+"""Oblique impact of a prolate spheroid (aspect ratio 2) on a wall in a viscous fluid:
+trajectory and rebound, without and with Coulomb friction (see README.md).
+
+    obliqueImpact.py run [--cpd N] [--force] [--quick]
+    obliqueImpact.py plot
+    obliqueImpact.py collect     (re-analyse results/<name>.h5 into results/runs.csv)
+
+The spheroid (D_eq = 4 mm, steel 7800 kg/m^3) starts at gap 1.5 D_eq with 0.6 m/s
+at 30 degrees from the wall normal, its axis in the plane of motion and tilted 45
+degrees from the normal, in oil (rho_f 935, mu 0.01 Pa s; St = rho_p U D_eq/(9 mu)
+~ 200). Box 6 x 4 x 4 D_eq, bottom the collision wall; lubricationContact, e_dry 0.97,
+friction 0 and 0.3. Results: results/runs.csv (rebound quantities), results/<name>.h5,
+results/table.md, results/trajectory.png.
+"""
+import argparse
+import csv
+import math
+import os
+import shutil
+import socket
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "wetRebound"))
+from wetRebound import provenance, read_csv, sub  # noqa: E402
+
+RESULTS = os.path.join(HERE, "results")
+RUNS_CSV = os.path.join(RESULTS, "runs.csv")
+D_EQ, AR, RHO_P, RHO_F, MU = 4e-3, 2.0, 7800.0, 935.0, 0.01
+U0, IMPACT_DEG, TILT_DEG = 0.6, 30.0, 45.0
+FIELDS = ["name", "friction", "cpd", "cells", "dt", "steps", "impacts", "u_n_in", "u_t_in", "u_n_out",
+          "u_t_out", "omega_y_out", "rebound_angle_deg", "tilt_in_deg", "tilt_out_deg",
+          "max_overlap_amin", "wall_s", "host", "date", "commit"]
+
+
+def semi_axes():
+    a = AR ** (2 / 3) * D_EQ / 2
+    b = AR ** (-1 / 3) * D_EQ / 2
+    return a, b
+
+
+def write_case(case, friction, cpd, quick):
+    a, b = semi_axes()
+    h = D_EQ / cpd
+    dt = 0.4 * h / U0
+    lx, ly, lz = 6 * D_EQ, 4 * D_EQ, 4 * D_EQ
+    nx, ny, nz = round(6 * cpd), round(4 * cpd), round(4 * cpd)
+    src = os.path.join(HERE, "..", "wetRebound", "caseTemplate")
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(src, case)
+    mm = 1e3
+    bm = f"{case}/system/blockMeshDict"
+    sub(bm, r"^// .*cells.*$", f"// 6 x 4 x 4 D_eq, D_eq = 4 mm, {cpd} cells per D_eq")
+    sub(bm, r"\(9 0 0\) \(9 9 0\) \(0 9 0\)",
+        f"({lx * mm:g} 0 0) ({lx * mm:g} {ly * mm:g} 0) (0 {ly * mm:g} 0)")
+    sub(bm, r"\(0 0 12\) \(9 0 12\) \(9 9 12\) \(0 9 12\)",
+        f"(0 0 {lz * mm:g}) ({lx * mm:g} 0 {lz * mm:g}) ({lx * mm:g} {ly * mm:g} {lz * mm:g}) "
+        f"(0 {ly * mm:g} {lz * mm:g})")
+    sub(bm, r"\(24 24 32\)", f"({nx} {ny} {nz})")
+    # the lowest point of the tilted spheroid: support height sqrt(n^T P n)
+    tilt = math.radians(TILT_DEG)
+    half_height = math.sqrt((a * math.cos(tilt)) ** 2 + (b * math.sin(tilt)) ** 2)
+    zc = half_height + 1.5 * D_EQ
+    impact = math.radians(IMPACT_DEG)
+    ux, uz = U0 * math.sin(impact), -U0 * math.cos(impact)
+    t_end = (1.5 * D_EQ / -uz) * (0.5 if quick else 2.6)
+    cd = f"{case}/system/controlDict"
+    sub(cd, r"^endTime .*$", f"endTime         {t_end:.6g};")
+    sub(cd, r"^deltaT .*$", f"deltaT          {dt:.6g};")
+    sub(cd, r"^maxDeltaT .*$", f"maxDeltaT       {dt:.6g};")
+    sub(cd, r"^writeInterval .*$", "writeInterval   100000;")
+    sub(f"{case}/constant/transportProperties", r"^nu .*$", f"nu              {MU / RHO_F:.8g};")
+    p = f"{case}/constant/immersedBodiesProperties"
+    sub(p, r"^fluidDensity .*$", f"fluidDensity    {RHO_F:g};")
+    sub(p, r"semiAxes .*$", f"semiAxes        ({a:.6g} {b:.6g} {b:.6g});")
+    sub(p, r"density         7800;", f"density         {RHO_P:g};")
+    # axis in the x-z plane, tilted from the wall normal towards +x
+    sub(p, r"centre .*$", f"centre          ({1.5 * D_EQ:.6g} {ly / 2:.6g} {zc:.6g});\n"
+        f"        axis            ({math.sin(tilt):.8f} 0 {math.cos(tilt):.8f});")
+    sub(p, r"velocity .*$", f"velocity        ({ux:.6g} 0 {uz:.6g});")
+    sub(p, r"restitution     0.97;", f"restitution     0.97;\n    friction        {friction:g};")
+    return dict(dt=dt, cells=nx * ny * nz)
+
+
+def analyse(h5):
+    import h5py
+    with h5py.File(h5, "r", locking=False) as f:
+        t = f["time"][()]
+        c = f["centre"][:, 0, :]
+        u = f["velocity"][:, 0, :]
+        w = f["angularVelocity"][:, 0, :]
+        q = f["orientation"][:, 0, :]
+        fc = f["collisionForce"][:, 0, :]
+        semi = f["semiAxes"][()].reshape(-1)[:3]
+    for arr in (c, u, w, q):
+        if not np.all(np.isfinite(arr)):
+            raise RuntimeError(f"{h5}: non-finite body state")
+    # body x axis in the world: first column of R(q), q = (w x y z)
+    qw, qx, qy, qz = q.T
+    axis = np.stack([1 - 2 * (qy ** 2 + qz ** 2), 2 * (qx * qy + qw * qz), 2 * (qx * qz - qw * qy)], 1)
+    tilt = np.degrees(np.arccos(np.clip(np.abs(axis[:, 2]), 0, 1)))
+    a, b = semi[0], semi[1]
+    # lowest point height: centre z - sqrt(e_z^T P e_z), P = R diag(a^2 b^2 b^2) R^T
+    nz2 = axis[:, 2] ** 2
+    gap = c[:, 2] - np.sqrt(a ** 2 * nz2 + b ** 2 * (1 - nz2))
+    touched = np.flatnonzero(np.linalg.norm(fc, axis=1) > 0)
+    out = dict(t=t, x=c[:, 0], gap=gap, tilt=tilt, u=u, w=w)
+    if len(touched) == 0:
+        out.update(touched=False)
+        return out
+    i0 = touched[0]
+    # impacts: runs of rows with a collision force (a tilted prolate body hits
+    # with one end, turns, and may hit again with the other)
+    impacts = 1 + int(np.sum(np.diff(touched) > 1))
+    i1 = min(touched[-1] + 1, len(t) - 1)
+    # rebound state: after the last collision force (lubrication included)
+    out.update(touched=True, i0=i0, i1=i1, impacts=impacts, u_in=u[i0 - 1], u_out=u[i1],
+               w_out=w[i1], tilt_in=tilt[i0 - 1], tilt_out=tilt[i1],
+               max_overlap=max(-gap.min(), 0) / b)
+    return out
+
+
+def run_one(friction, cpd, force, quick):
+    tag = f"{'quick-' if quick else ''}mu{friction:g}-c{cpd}"
+    out_csv = os.path.join(RESULTS, "quick.csv" if quick else "runs.csv")
+    if not force and not quick and any(r["name"] == tag for r in read_csv(out_csv)):
+        print(f"{tag}: in results/runs.csv, skipped")
+        return
+    case = os.path.join(HERE, "run", tag)
+    info = write_case(case, friction, cpd, quick)
+    print(f"{tag}: {info['cells']} cells, dt {info['dt']:.3g} s", flush=True)
+    start = time.time()
+    with open(os.path.join(case, "log.Allrun"), "w") as log:
+        rc = subprocess.run(["nice", "-n", "5", "./Allrun"], cwd=case, stdout=log,
+                            stderr=subprocess.STDOUT).returncode
+    wall = time.time() - start
+    if rc != 0:
+        sys.exit(f"obliqueImpact: {tag} failed (see {case}/log.*)")
+    h5 = os.path.join(case, "postProcessing", "immersedBodies", "bodies.h5")
+    r = analyse(h5)
+    if not r["touched"]:
+        if quick:
+            print(f"  quick run: finite, {len(r['t'])} rows, no contact yet (as expected)")
+            return
+        sys.exit(f"obliqueImpact: {tag}: the spheroid never reached the wall")
+    row = dict(name=tag, friction=friction, cpd=cpd, cells=info["cells"], dt=f"{info['dt']:.6g}",
+               steps=len(r["t"]) - 1, impacts=r["impacts"], u_n_in=f"{-r['u_in'][2]:.4f}", u_t_in=f"{r['u_in'][0]:.4f}",
+               u_n_out=f"{r['u_out'][2]:.4f}", u_t_out=f"{r['u_out'][0]:.4f}",
+               omega_y_out=f"{r['w_out'][1]:.2f}",
+               rebound_angle_deg=f"{math.degrees(math.atan2(r['u_out'][0], r['u_out'][2])):.1f}",
+               tilt_in_deg=f"{r['tilt_in']:.1f}", tilt_out_deg=f"{r['tilt_out']:.1f}",
+               max_overlap_amin=f"{r['max_overlap']:.4f}", wall_s=round(wall),
+               host=socket.gethostname(), date=time.strftime("%Y-%m-%d %H:%M"), commit=provenance())
+    print("  " + ", ".join(f"{k} {row[k]}" for k in FIELDS[6:15]), flush=True)
+    if not quick:
+        shutil.copy(h5, os.path.join(RESULTS, f"{tag}.h5"))
+    rows = [x for x in read_csv(out_csv) if x["name"] != tag] + [row]
+    with open(out_csv, "w", newline="") as f:
+        wr = csv.DictWriter(f, fieldnames=FIELDS)
+        wr.writeheader()
+        wr.writerows(rows)
+
+
+def do_plot():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = read_csv(RUNS_CSV)
+    if not rows:
+        sys.exit("obliqueImpact: no runs in results/runs.csv")
+    lines = ["| run | impacts | u_n in | u_t in | u_n out | u_t out | omega_y out [1/s] | rebound angle | "
+             "tilt in -> out | max overlap/b | wall |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        lines.append(f"| friction {r['friction']}, {r['cpd']} cells/D_eq | {r['impacts']} | {r['u_n_in']} | "
+                     f"{r['u_t_in']} | {r['u_n_out']} | {r['u_t_out']} | {r['omega_y_out']} | "
+                     f"{r['rebound_angle_deg']} deg | {r['tilt_in_deg']} -> {r['tilt_out_deg']} deg | "
+                     f"{r['max_overlap_amin']} | {r['wall_s']} s |")
+    with open(os.path.join(RESULTS, "table.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+    fig, axs = plt.subplots(1, 3, figsize=(12, 3.6))
+    for r in rows:
+        x = analyse(os.path.join(RESULTS, f"{r['name']}.h5"))
+        lab = f"friction {r['friction']}"
+        axs[0].plot(x["x"] / D_EQ, x["gap"] / D_EQ, label=lab)
+        axs[1].plot(x["t"] * 1e3, x["tilt"], label=lab)
+        axs[2].plot(x["t"] * 1e3, x["w"][:, 1], label=lab)
+    axs[0].set_xlabel("x / D_eq")
+    axs[0].set_ylabel("lowest point above the wall / D_eq")
+    axs[1].set_xlabel("t [ms]")
+    axs[1].set_ylabel("axis tilt from the wall normal [deg]")
+    axs[2].set_xlabel("t [ms]")
+    axs[2].set_ylabel("omega_y [1/s]")
+    for ax in axs:
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle("Prolate spheroid (Ar 2) hitting a wall at 30 deg in oil, St ~ 200")
+    fig.tight_layout()
+    fig.savefig(os.path.join(RESULTS, "trajectory.png"), dpi=120)
+
+
+def do_collect():
+    rows = read_csv(RUNS_CSV)
+    for row in rows:
+        r = analyse(os.path.join(RESULTS, f"{row['name']}.h5"))
+        row.update(impacts=r["impacts"], u_n_in=f"{-r['u_in'][2]:.4f}", u_t_in=f"{r['u_in'][0]:.4f}",
+                   u_n_out=f"{r['u_out'][2]:.4f}", u_t_out=f"{r['u_out'][0]:.4f}",
+                   omega_y_out=f"{r['w_out'][1]:.2f}",
+                   rebound_angle_deg=f"{math.degrees(math.atan2(r['u_out'][0], r['u_out'][2])):.1f}",
+                   tilt_in_deg=f"{r['tilt_in']:.1f}", tilt_out_deg=f"{r['tilt_out']:.1f}",
+                   max_overlap_amin=f"{r['max_overlap']:.4f}")
+    with open(RUNS_CSV, "w", newline="") as f:
+        wr = csv.DictWriter(f, fieldnames=FIELDS, extrasaction="ignore")
+        wr.writeheader()
+        wr.writerows(rows)
+    print(f"obliqueImpact: {len(rows)} runs re-analysed")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    sp = ap.add_subparsers(dest="cmd", required=True)
+    r = sp.add_parser("run")
+    r.add_argument("--cpd", type=int, default=10)
+    r.add_argument("--force", action="store_true")
+    r.add_argument("--quick", action="store_true")
+    sp.add_parser("plot")
+    sp.add_parser("collect")
+    args = ap.parse_args()
+    os.makedirs(RESULTS, exist_ok=True)
+    if args.cmd == "plot":
+        do_plot()
+        return
+    if args.cmd == "collect":
+        do_collect()
+        return
+    if args.cpd < 4 or args.cpd > 64:
+        sys.exit(f"obliqueImpact: --cpd {args.cpd}: allowed 4 to 64")
+    if args.quick:
+        run_one(0.3, 5, True, True)
+        return
+    for friction in (0.0, 0.3):
+        run_one(friction, args.cpd, args.force, False)
+
+
+if __name__ == "__main__":
+    main()

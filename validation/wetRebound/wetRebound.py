@@ -1,0 +1,305 @@
+#!/usr/bin/python3
+"""Wet rebound of a steel sphere on a wall against Gondret, Lance and Petit (2002):
+the five cases of physics-references.md section 2, e/e_dry against St and the
+master curve e/e_dry = exp(-35/St) (Legendre et al.).
+
+    wetRebound.py run [--case NAME ...] [--cpd N] [--force] [--quick]
+    wetRebound.py plot
+    wetRebound.py collect
+
+run:  each case in run/<name>/ (git-ignored), serial, nice; the body time series is
+      copied to results/<name>.h5 and a line appended to results/runs.csv; finished
+      runs are skipped unless --force. --quick: the St 152 case at 6 cells/d to the
+      rebound (about a minute; results/quick.csv).
+plot: results/table.md, results/restitution.png, results/trajectories.png.
+collect: recompute the measured columns of results/runs.csv from results/<name>.h5
+      (after a change of the analysis; the run columns are kept).
+
+Set-up: a box 4d x 4d x 5d (side walls no-slip, bottom the collision wall), the
+sphere released at gap 2d with the velocity of the case (U = 9 St mu/(rho_p d))
+and gravity; it slows as its boundary layer and wake form, so St is measured:
+U_in is the approach speed just before the first collision force (the lubrication
+onset at h = 0.075 a), U_out the largest rebound speed once the sphere has left
+the wall (gap >= 0 after the contact), e = U_out/U_in, St = rho_p U_in d/(9 mu);
+e_spring (the largest speed at any time after the touch, at the end of the
+stretched spring phase, before the film resists the separation) is reported too. Fixed step dt = 0.4 h/U.
+Collision: lubricationContact (e_dry 0.97, T_c = 10 dt, 10 sub-steps per contact,
+activation 0.075 a, saturation 1e-3 a), penaltyRatio 1e-3, virtualMass 0.5.
+"""
+import argparse
+import csv
+import math
+import os
+import re
+import shutil
+import socket
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+RESULTS = os.path.join(HERE, "results")
+RUNS_CSV = os.path.join(RESULTS, "runs.csv")
+RHO_P = 7800.0
+E_DRY = 0.97
+
+# name: (St, Re, rho_f, mu, d) of Gondret et al. 2002 (physics-references.md 2)
+CASES = {
+    "St27": (27, 30, 965.0, 0.100, 6e-3),
+    "St100": (100, 110, 953.0, 0.020, 4e-3),
+    "St152": (152, 164, 935.0, 0.010, 3e-3),
+    "St192": (192, 212, 953.0, 0.020, 6e-3),
+    "St742": (742, 788, 920.0, 0.005, 5e-3),
+}
+
+FIELDS = ["name", "St_case", "cpd", "cells", "dt", "steps", "U_release", "U_in", "U_out", "e",
+          "e_spring",
+          "St", "e_over_edry", "master", "max_overlap_a", "wall_s", "cpu_s", "host", "date",
+          "commit"]
+
+
+def provenance():
+    top = os.path.abspath(os.path.join(HERE, "..", ".."))
+    try:
+        head = subprocess.run(["git", "-C", top, "rev-parse", "--short", "HEAD"], check=True,
+                              capture_output=True, text=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", top, "diff", "--quiet", "HEAD", "--", "src"]).returncode
+        return head + ("+src" if dirty else "")
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
+def sub(path, pattern, repl):
+    with open(path) as f:
+        s = f.read()
+    s2, n = re.subn(pattern, repl, s, flags=re.M)
+    if n == 0:
+        sys.exit(f"wetRebound: '{pattern}' not found in {path}")
+    with open(path, "w") as f:
+        f.write(s2)
+
+
+def write_case(case, name, cpd, end_factor=1.0):
+    st, re_, rho_f, mu, d = CASES[name]
+    a = d / 2
+    u = 9 * st * mu / (RHO_P * d)
+    h = d / cpd
+    dt = 0.4 * h / u
+    lx, lz = 4 * d, 5 * d
+    nx, nz = round(4 * cpd), round(5 * cpd)
+    # approach 2d, contact, and the rebound to its largest speed (the viscous
+    # cases decelerate within a fraction of d; 1.2 d at St 742)
+    end = end_factor * (2.0 * d / u + 40 * dt + (0.6 + 0.6 * (st > 500)) * d / u)
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(os.path.join(HERE, "caseTemplate"), case)
+    mm = 1e3
+    sub(f"{case}/system/blockMeshDict", r"^// .*cells.*$",
+        f"// 4d x 4d x 5d, d = {d * mm:g} mm, {cpd} cells per d")
+    sub(f"{case}/system/blockMeshDict", r"\(9 0 0\) \(9 9 0\) \(0 9 0\)",
+        f"({lx * mm:g} 0 0) ({lx * mm:g} {lx * mm:g} 0) (0 {lx * mm:g} 0)")
+    sub(f"{case}/system/blockMeshDict",
+        r"\(0 0 12\) \(9 0 12\) \(9 9 12\) \(0 9 12\)",
+        f"(0 0 {lz * mm:g}) ({lx * mm:g} 0 {lz * mm:g}) ({lx * mm:g} {lx * mm:g} {lz * mm:g}) "
+        f"(0 {lx * mm:g} {lz * mm:g})")
+    sub(f"{case}/system/blockMeshDict", r"\(24 24 32\)", f"({nx} {nx} {nz})")
+    sub(f"{case}/system/controlDict", r"^endTime .*$", f"endTime         {end:.6g};")
+    sub(f"{case}/system/controlDict", r"^deltaT .*$", f"deltaT          {dt:.6g};")
+    sub(f"{case}/system/controlDict", r"^maxDeltaT .*$", f"maxDeltaT       {dt:.6g};")
+    sub(f"{case}/system/controlDict", r"^writeInterval .*$", "writeInterval   100000;")
+    sub(f"{case}/constant/transportProperties", r"^nu .*$",
+        f"nu              {mu / rho_f:.8g};   // mu/rho_f [m^2/s]")
+    p = f"{case}/constant/immersedBodiesProperties"
+    sub(p, r"^fluidDensity .*$", f"fluidDensity    {rho_f:g};")
+    sub(p, r"semiAxes .*$", f"semiAxes        ({a:g} {a:g} {a:g});")
+    sub(p, r"centre .*$", f"centre          ({lx / 2:g} {lx / 2:g} {a + 2 * d:g});")
+    sub(p, r"velocity .*$", f"velocity        (0 0 {-u:.6g});")
+    return dict(dt=dt, cells=nx * nx * nz, U_release=u, end=end)
+
+
+def analyse(h5, name):
+    import h5py
+    st, re_, rho_f, mu, d = CASES[name]
+    a = d / 2
+    with h5py.File(h5, "r", locking=False) as f:
+        t = f["time"][()]
+        z = f["centre"][:, 0, 2]
+        w = f["velocity"][:, 0, 2]
+        fc = f["collisionForce"][:, 0, 2]
+    if not (np.all(np.isfinite(z)) and np.all(np.isfinite(w))):
+        raise RuntimeError(f"{name}: non-finite body state")
+    touched = np.flatnonzero(fc != 0)
+    if len(touched) == 0:
+        raise RuntimeError(f"{name}: the sphere never reached the wall")
+    i0 = touched[0]
+    u_in = -w[i0 - 1]
+    gap = z - a
+    # the largest rebound speed once the sphere has left the wall (gap >= 0
+    # again after the contact: the film's resistance to the separation
+    # included); the largest speed at any time after the touch, reached at
+    # the end of the stretched spring phase, is reported beside it
+    inContact = np.flatnonzero(gap[i0:] < 0)
+    u_spring = max(w[i0:].max(), 0.0)
+    if len(inContact):
+        left = i0 + inContact[-1] + 1
+        u_out = max(w[left:].max(), 0.0) if left < len(w) else 0.0
+    else:
+        u_out = u_spring
+    return dict(t=t, gap=gap / d, w=w, U_in=u_in, U_out=u_out, e=u_out / u_in,
+                e_spring=u_spring / u_in,
+                St=RHO_P * u_in * d / (9 * mu), max_overlap_a=max(-gap.min(), 0) / a)
+
+
+def run_one(name, cpd, force, quick):
+    out_csv = os.path.join(RESULTS, "quick.csv") if quick else RUNS_CSV
+    tag = f"{name}-c{cpd}"
+    rows = read_csv(out_csv)
+    if not force and not quick and any(r["name"] == tag for r in rows):
+        print(f"{tag}: in {os.path.relpath(out_csv, HERE)}, skipped")
+        return
+    case = os.path.join(HERE, "run", tag)
+    info = write_case(case, name, cpd)
+    print(f"{tag}: {info['cells']} cells, dt {info['dt']:.3g} s, end {info['end']:.3g} s", flush=True)
+    start = time.time()
+    with open(os.path.join(case, "log.Allrun"), "w") as log:
+        rc = subprocess.run(["nice", "-n", "5", "./Allrun"], cwd=case, stdout=log,
+                            stderr=subprocess.STDOUT).returncode
+    wall = time.time() - start
+    solver_log = os.path.join(case, "log.immersedSpheroidFoam")
+    if rc != 0 or not os.path.exists(solver_log):
+        sys.exit(f"wetRebound: {tag} failed (see {case}/log.*)")
+    with open(solver_log) as f:
+        cpu = re.findall(r"ExecutionTime = (\S+) s", f.read())
+    h5 = os.path.join(case, "postProcessing", "immersedBodies", "bodies.h5")
+    r = analyse(h5, name)
+    master = math.exp(-35 / r["St"])
+    row = dict(name=tag, St_case=CASES[name][0], cpd=cpd, cells=info["cells"],
+               dt=f"{info['dt']:.6g}", steps=len(r["t"]) - 1, U_release=f"{info['U_release']:.5g}",
+               U_in=f"{r['U_in']:.5g}", U_out=f"{r['U_out']:.5g}", e=f"{r['e']:.4f}",
+               e_spring=f"{r['e_spring']:.4f}",
+               St=f"{r['St']:.1f}", e_over_edry=f"{r['e'] / E_DRY:.4f}", master=f"{master:.4f}",
+               max_overlap_a=f"{r['max_overlap_a']:.4f}", wall_s=round(wall),
+               cpu_s=round(float(cpu[-1])) if cpu else "", host=socket.gethostname(),
+               date=time.strftime("%Y-%m-%d %H:%M"), commit=provenance())
+    print(f"  U_in {r['U_in']:.4f} m/s, St {r['St']:.1f}, e {r['e']:.3f}, e/e_dry "
+          f"{r['e'] / E_DRY:.3f} (master curve {master:.3f}), max overlap "
+          f"{r['max_overlap_a']:.3f} a, wall {wall:.0f} s", flush=True)
+    if not quick:
+        shutil.copy(h5, os.path.join(RESULTS, f"{tag}.h5"))
+    rows = [x for x in read_csv(out_csv) if x["name"] != tag] + [row]
+    os.makedirs(RESULTS, exist_ok=True)
+    with open(out_csv, "w", newline="") as f:
+        wr = csv.DictWriter(f, fieldnames=FIELDS)
+        wr.writeheader()
+        wr.writerows(rows)
+
+
+def read_csv(path):
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def do_plot():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = read_csv(RUNS_CSV)
+    if not rows:
+        sys.exit("wetRebound: no runs in results/runs.csv")
+    lines = ["| case | cells/d | U_in [m/s] | St | e | e/e_dry | exp(-35/St) | error | "
+             "e_spring/e_dry | max overlap/a | wall |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in sorted(rows, key=lambda r: (int(r["cpd"]), float(r["St_case"]))):
+        err = float(r["e_over_edry"]) - float(r["master"])
+        lines.append(f"| St {r['St_case']} (Gondret) | {r['cpd']} | {float(r['U_in']):.3f} | "
+                     f"{float(r['St']):.0f} | {float(r['e']):.3f} | {float(r['e_over_edry']):.3f} | "
+                     f"{float(r['master']):.3f} | {err:+.3f} | {float(r['e_spring']) / E_DRY:.3f} | "
+                     f"{float(r['max_overlap_a']):.3f} | "
+                     f"{r['wall_s']} s |")
+    with open(os.path.join(RESULTS, "table.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+    fig, ax = plt.subplots(figsize=(6, 4))
+    st = np.logspace(0.7, 3.2, 200)
+    ax.semilogx(st, np.exp(-35 / st), "k-", label="exp(-35/St) (Legendre et al.)")
+    for cpd in sorted({int(r["cpd"]) for r in rows}):
+        sel = [r for r in rows if int(r["cpd"]) == cpd]
+        ax.semilogx([float(r["St"]) for r in sel], [float(r["e_over_edry"]) for r in sel], "o",
+                    label=f"after leaving the wall, {cpd} cells/d")
+        ax.semilogx([float(r["St"]) for r in sel], [float(r["e_spring"]) / E_DRY for r in sel], "^",
+                    mfc="none", label=f"end of the spring phase, {cpd} cells/d")
+    ax.set_xlabel("St = rho_p U_in d / (9 mu)")
+    ax.set_ylabel("e / e_dry")
+    ax.set_ylim(0, 1.05)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    ax.set_title("Sphere-wall rebound in a viscous fluid (Gondret et al. 2002 cases)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(RESULTS, "restitution.png"), dpi=120)
+
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for r in sorted(rows, key=lambda r: float(r["St_case"])):
+        h5 = os.path.join(RESULTS, f"{r['name']}.h5")
+        if not os.path.exists(h5):
+            continue
+        name = r["name"].split("-c")[0]
+        x = analyse(h5, name)
+        d = CASES[name][4]
+        ax.plot(x["t"] * float(r["U_in"]) / d, x["gap"], label=f"{r['name']} (St {float(r['St']):.0f})")
+    ax.axhline(0, color="k", lw=0.5)
+    ax.set_xlabel("t U_in / d")
+    ax.set_ylabel("gap / d")
+    ax.legend(fontsize=7)
+    ax.grid(True, alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(RESULTS, "trajectories.png"), dpi=120)
+
+
+def do_collect():
+    rows = read_csv(RUNS_CSV)
+    for row in rows:
+        name = row["name"].split("-c")[0]
+        r = analyse(os.path.join(RESULTS, f"{row['name']}.h5"), name)
+        row.update(U_in=f"{r['U_in']:.5g}", U_out=f"{r['U_out']:.5g}", e=f"{r['e']:.4f}",
+                   e_spring=f"{r['e_spring']:.4f}", St=f"{r['St']:.1f}",
+                   e_over_edry=f"{r['e'] / E_DRY:.4f}", master=f"{math.exp(-35 / r['St']):.4f}",
+                   max_overlap_a=f"{r['max_overlap_a']:.4f}")
+    with open(RUNS_CSV, "w", newline="") as f:
+        wr = csv.DictWriter(f, fieldnames=FIELDS, extrasaction="ignore")
+        wr.writeheader()
+        wr.writerows(rows)
+    print(f"wetRebound: {len(rows)} runs re-analysed")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    sp = ap.add_subparsers(dest="cmd", required=True)
+    r = sp.add_parser("run")
+    r.add_argument("--case", action="append", default=[], choices=sorted(CASES))
+    r.add_argument("--cpd", type=int, default=12)
+    r.add_argument("--force", action="store_true")
+    r.add_argument("--quick", action="store_true")
+    sp.add_parser("plot")
+    sp.add_parser("collect")
+    args = ap.parse_args()
+    os.makedirs(RESULTS, exist_ok=True)
+    if args.cmd == "plot":
+        do_plot()
+        return
+    if args.cmd == "collect":
+        do_collect()
+        return
+    if args.cpd < 4 or args.cpd > 64:
+        sys.exit(f"wetRebound: --cpd {args.cpd}: allowed 4 to 64 cells per diameter")
+    if args.quick:
+        run_one("St152", 6, True, True)
+        return
+    for name in (args.case or sorted(CASES, key=lambda n: CASES[n][0])):
+        run_one(name, args.cpd, args.force, False)
+
+
+if __name__ == "__main__":
+    main()

@@ -353,7 +353,9 @@ struct StagedReplica {
       sum += d.distance;
     }
     const double t4 = cpuNow();
-    // warm starts of the pairs also kept last call (both lists are sorted), not timed
+    // warm starts of the pairs also kept last call (the search does not sort
+    // its pairs: sort them here, not timed, so that the merge finds them)
+    std::sort(kept.begin(), kept.end());
     initial.assign(kept.size(), nullptr);
     for (std::size_t k = 0, m = 0; k < kept.size(); ++k) {
       while (m < previous.size() && previous[m] < kept[k]) ++m;
@@ -468,7 +470,7 @@ struct Timings {
 
 /// Sums over the timed rounds.
 struct Counts {
-  long candidates = 0, rejected = 0, queries = 0, coldIterations = 0, warmIterations = 0,
+  long candidates = 0, rejected = 0, boxRejected = 0, queries = 0, coldIterations = 0, warmIterations = 0,
        coldNotConverged = 0, warmNotConverged = 0, contacts = 0, lubricated = 0;
   PeerStatistics peer;
 };
@@ -482,7 +484,7 @@ const char* kColumns =
     "naiveSpheresUs,naiveDistancesUs,"
     "naiveOverCold,naiveOverWarm,coldOverWarm,naiveOverPipelineCold,naiveOverPipelineWarm,"
     "coldUsPerQuery,warmUsPerQuery,naiveUsPerQuery,"
-    "candidatePairs,prefilterRejected,distanceQueries,coldMeanIterations,warmMeanIterations,"
+    "candidatePairs,prefilterRejected,boxRejected,distanceQueries,coldMeanIterations,warmMeanIterations,"
     "coldNotConverged,warmNotConverged,contacts,lubricated,"
     "naivePairsTested,naiveSphereOverlaps,naiveQueries,naiveMeanIterations,naiveNotConverged\n";
 
@@ -569,6 +571,7 @@ void measure(Scene& scene, CollisionMode mode, int warmupRounds, int rounds, Tim
     }
     n.candidates += cs.candidatePairs;
     n.rejected += cs.prefilterRejected;
+    n.boxRejected += cs.boxRejected;  // of which by the boxes (cold model)
     n.queries += cs.distanceQueries;
     n.coldIterations += cs.distanceIterations;
     n.warmIterations += ws.distanceIterations;
@@ -636,7 +639,7 @@ void runTable(const TableOptions& t) {
         << naive / (setup + search + prefilter + dWarm) << ','
         << med(tm.perQueryCold) << ',' << med(tm.perQueryWarm) << ','
         << med(tm.perQueryNaive) << ','
-        << n.candidates / R << ',' << n.rejected / R << ',' << n.queries / R << ','
+        << n.candidates / R << ',' << n.rejected / R << ',' << n.boxRejected / R << ',' << n.queries / R << ','
         << ratio(n.coldIterations, n.queries) << ',' << ratio(n.warmIterations, n.queries) << ','
         << n.coldNotConverged << ',' << n.warmNotConverged << ','
         << n.contacts / R << ',' << n.lubricated / R << ','

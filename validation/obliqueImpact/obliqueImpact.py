@@ -27,7 +27,7 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "wetRebound"))
-from wetRebound import provenance, read_csv, sub  # noqa: E402
+from wetRebound import provenance, read_csv, sub, write_rows  # noqa: E402
 
 RESULTS = os.path.join(HERE, "results")
 RUNS_CSV = os.path.join(RESULTS, "runs.csv")
@@ -35,7 +35,8 @@ D_EQ, AR, RHO_P, RHO_F, MU = 4e-3, 2.0, 7800.0, 935.0, 0.01
 U0, IMPACT_DEG, TILT_DEG = 0.6, 30.0, 45.0
 FIELDS = ["name", "friction", "cpd", "cells", "dt", "steps", "impacts", "u_n_in", "u_t_in", "u_n_out",
           "u_t_out", "omega_y_out", "rebound_angle_deg", "tilt_in_deg", "tilt_out_deg",
-          "max_overlap_amin", "wall_s", "host", "date", "commit"]
+          "max_overlap_amin", "max_omega_y", "max_tilt_deg", "impact_interval_ms", "u_z_after_first",
+          "wall_s", "host", "date", "commit"]
 
 
 def semi_axes():
@@ -119,10 +120,29 @@ def analyse(h5):
     impacts = 1 + int(np.sum(np.diff(touched) > 1))
     i1 = min(touched[-1] + 1, len(t) - 1)
     # rebound state: after the last collision force (lubrication included)
+    starts = touched[np.r_[0, np.flatnonzero(np.diff(touched) > 1) + 1]]
     out.update(touched=True, i0=i0, i1=i1, impacts=impacts, u_in=u[i0 - 1], u_out=u[i1],
                w_out=w[i1], tilt_in=tilt[i0 - 1], tilt_out=tilt[i1],
-               max_overlap=max(-gap.min(), 0) / b)
+               max_overlap=max(-gap.min(), 0) / b,
+               max_omega=np.abs(w[:, 1]).max(), max_tilt=tilt.max(),
+               impact_gap=(t[starts[-1]] - t[starts[0]]) if impacts > 1 else 0.0,
+               # the centre's vertical velocity when the first impact has ended
+               u_z_after_first=u[touched[np.flatnonzero(np.diff(touched) > 1)[0]] + 1, 2]
+               if impacts > 1 else float("nan"))
     return out
+
+
+def measured(r):
+    """The measured columns of runs.csv from analyse()."""
+    return dict(impacts=r["impacts"], u_n_in=f"{-r['u_in'][2]:.4f}", u_t_in=f"{r['u_in'][0]:.4f}",
+                u_n_out=f"{r['u_out'][2]:.4f}", u_t_out=f"{r['u_out'][0]:.4f}",
+                omega_y_out=f"{r['w_out'][1]:.2f}",
+                rebound_angle_deg=f"{math.degrees(math.atan2(r['u_out'][0], r['u_out'][2])):.1f}",
+                tilt_in_deg=f"{r['tilt_in']:.1f}", tilt_out_deg=f"{r['tilt_out']:.1f}",
+                max_overlap_amin=f"{r['max_overlap']:.4f}", max_omega_y=f"{r['max_omega']:.1f}",
+                max_tilt_deg=f"{r['max_tilt']:.1f}",
+                impact_interval_ms=f"{1e3 * r['impact_gap']:.2f}",
+                u_z_after_first=f"{r['u_z_after_first']:.4f}")
 
 
 def run_one(friction, cpd, force, quick):
@@ -149,21 +169,12 @@ def run_one(friction, cpd, force, quick):
             return
         sys.exit(f"obliqueImpact: {tag}: the spheroid never reached the wall")
     row = dict(name=tag, friction=friction, cpd=cpd, cells=info["cells"], dt=f"{info['dt']:.6g}",
-               steps=len(r["t"]) - 1, impacts=r["impacts"], u_n_in=f"{-r['u_in'][2]:.4f}", u_t_in=f"{r['u_in'][0]:.4f}",
-               u_n_out=f"{r['u_out'][2]:.4f}", u_t_out=f"{r['u_out'][0]:.4f}",
-               omega_y_out=f"{r['w_out'][1]:.2f}",
-               rebound_angle_deg=f"{math.degrees(math.atan2(r['u_out'][0], r['u_out'][2])):.1f}",
-               tilt_in_deg=f"{r['tilt_in']:.1f}", tilt_out_deg=f"{r['tilt_out']:.1f}",
-               max_overlap_amin=f"{r['max_overlap']:.4f}", wall_s=round(wall),
-               host=socket.gethostname(), date=time.strftime("%Y-%m-%d %H:%M"), commit=provenance())
+               steps=len(r["t"]) - 1, wall_s=round(wall), host=socket.gethostname(),
+               date=time.strftime("%Y-%m-%d %H:%M"), commit=provenance(), **measured(r))
     print("  " + ", ".join(f"{k} {row[k]}" for k in FIELDS[6:15]), flush=True)
     if not quick:
         shutil.copy(h5, os.path.join(RESULTS, f"{tag}.h5"))
-    rows = [x for x in read_csv(out_csv) if x["name"] != tag] + [row]
-    with open(out_csv, "w", newline="") as f:
-        wr = csv.DictWriter(f, fieldnames=FIELDS)
-        wr.writeheader()
-        wr.writerows(rows)
+    write_rows(out_csv, FIELDS, [x for x in read_csv(out_csv) if x["name"] != tag] + [row])
 
 
 def do_plot():
@@ -174,12 +185,15 @@ def do_plot():
     if not rows:
         sys.exit("obliqueImpact: no runs in results/runs.csv")
     lines = ["| run | impacts | u_n in | u_t in | u_n out | u_t out | omega_y out [1/s] | rebound angle | "
-             "tilt in -> out | max overlap/b | wall |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+             "tilt in -> out | max overlap/b | max omega_y | max tilt | between impacts | "
+             "u_z after the first | wall |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         lines.append(f"| friction {r['friction']}, {r['cpd']} cells/D_eq | {r['impacts']} | {r['u_n_in']} | "
                      f"{r['u_t_in']} | {r['u_n_out']} | {r['u_t_out']} | {r['omega_y_out']} | "
                      f"{r['rebound_angle_deg']} deg | {r['tilt_in_deg']} -> {r['tilt_out_deg']} deg | "
-                     f"{r['max_overlap_amin']} | {r['wall_s']} s |")
+                     f"{r['max_overlap_amin']} | {r['max_omega_y']} | {r['max_tilt_deg']} deg | "
+                     f"{r['impact_interval_ms']} ms | {r['u_z_after_first']} | {r['wall_s']} s |")
     with open(os.path.join(RESULTS, "table.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
@@ -207,17 +221,8 @@ def do_plot():
 def do_collect():
     rows = read_csv(RUNS_CSV)
     for row in rows:
-        r = analyse(os.path.join(RESULTS, f"{row['name']}.h5"))
-        row.update(impacts=r["impacts"], u_n_in=f"{-r['u_in'][2]:.4f}", u_t_in=f"{r['u_in'][0]:.4f}",
-                   u_n_out=f"{r['u_out'][2]:.4f}", u_t_out=f"{r['u_out'][0]:.4f}",
-                   omega_y_out=f"{r['w_out'][1]:.2f}",
-                   rebound_angle_deg=f"{math.degrees(math.atan2(r['u_out'][0], r['u_out'][2])):.1f}",
-                   tilt_in_deg=f"{r['tilt_in']:.1f}", tilt_out_deg=f"{r['tilt_out']:.1f}",
-                   max_overlap_amin=f"{r['max_overlap']:.4f}")
-    with open(RUNS_CSV, "w", newline="") as f:
-        wr = csv.DictWriter(f, fieldnames=FIELDS, extrasaction="ignore")
-        wr.writeheader()
-        wr.writerows(rows)
+        row.update(measured(analyse(os.path.join(RESULTS, f"{row['name']}.h5"))))
+    write_rows(RUNS_CSV, FIELDS, rows)
     print(f"obliqueImpact: {len(rows)} runs re-analysed")
 
 

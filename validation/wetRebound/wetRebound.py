@@ -22,7 +22,9 @@ U_in is the approach speed just before the first collision force (the lubricatio
 onset at h = 0.075 a), U_out the largest rebound speed once the sphere has left
 the wall (gap >= 0 after the contact), e = U_out/U_in, St = rho_p U_in d/(9 mu);
 e_spring (the largest speed at any time after the touch, at the end of the
-stretched spring phase, before the film resists the separation) is reported too. Fixed step dt = 0.4 h/U.
+stretched spring phase, before the film resists the separation) is reported too,
+with the impulses of the collision force, the hydrodynamic force and the net weight
+over the steps with a collision force, over m U_in (J_coll, J_hydro, J_gravity). Fixed step dt = 0.4 h/U.
 Collision: lubricationContact (e_dry 0.97, T_c = 10 dt, 10 sub-steps per contact,
 activation 0.075 a, saturation 1e-3 a), penaltyRatio 1e-3, virtualMass 0.5.
 """
@@ -56,7 +58,7 @@ CASES = {
 
 FIELDS = ["name", "St_case", "cpd", "cells", "dt", "steps", "U_release", "U_in", "U_out", "e",
           "e_spring",
-          "St", "e_over_edry", "master", "max_overlap_a", "wall_s", "cpu_s", "host", "date",
+          "St", "e_over_edry", "master", "max_overlap_a", "J_coll", "J_hydro", "J_gravity", "wall_s", "cpu_s", "host", "date",
           "commit"]
 
 
@@ -127,6 +129,7 @@ def analyse(h5, name):
         z = f["centre"][:, 0, 2]
         w = f["velocity"][:, 0, 2]
         fc = f["collisionForce"][:, 0, 2]
+        fh = f["hydroForce"][:, 0, 2]
     if not (np.all(np.isfinite(z)) and np.all(np.isfinite(w))):
         raise RuntimeError(f"{name}: non-finite body state")
     touched = np.flatnonzero(fc != 0)
@@ -146,9 +149,37 @@ def analyse(h5, name):
         u_out = max(w[left:].max(), 0.0) if left < len(w) else 0.0
     else:
         u_out = u_spring
+    # impulses over the steps with a collision force, over m U_in (the forces
+    # of row k act over the step that ends at row k; fixed step)
+    i1 = touched[-1]
+    dt = t[1] - t[0]
+    volume = 4 / 3 * math.pi * a ** 3
+    momentum = RHO_P * volume * u_in
+    j_coll = np.sum(fc[i0:i1 + 1]) * dt / momentum
+    j_hydro = np.sum(fh[i0:i1 + 1]) * dt / momentum
+    j_gravity = -(RHO_P - rho_f) * volume * 9.81 * (i1 + 1 - i0) * dt / momentum
     return dict(t=t, gap=gap / d, w=w, U_in=u_in, U_out=u_out, e=u_out / u_in,
                 e_spring=u_spring / u_in,
-                St=RHO_P * u_in * d / (9 * mu), max_overlap_a=max(-gap.min(), 0) / a)
+                St=RHO_P * u_in * d / (9 * mu), max_overlap_a=max(-gap.min(), 0) / a,
+                J_coll=j_coll, J_hydro=j_hydro, J_gravity=j_gravity)
+
+
+def measured(r):
+    """The measured columns of runs.csv from analyse()."""
+    return dict(U_in=f"{r['U_in']:.5g}", U_out=f"{r['U_out']:.5g}", e=f"{r['e']:.4f}",
+                e_spring=f"{r['e_spring']:.4f}", St=f"{r['St']:.1f}",
+                e_over_edry=f"{r['e'] / E_DRY:.4f}", master=f"{math.exp(-35 / r['St']):.4f}",
+                max_overlap_a=f"{r['max_overlap_a']:.4f}", J_coll=f"{r['J_coll']:.3f}",
+                J_hydro=f"{r['J_hydro']:.3f}", J_gravity=f"{r['J_gravity']:.3f}")
+
+
+def write_rows(path, fields, rows):
+    """Write rows (dicts) to the CSV file path with the columns fields."""
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w", newline="") as f:
+        wr = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
+        wr.writeheader()
+        wr.writerows(rows)
 
 
 def run_one(name, cpd, force, quick):
@@ -176,23 +207,15 @@ def run_one(name, cpd, force, quick):
     master = math.exp(-35 / r["St"])
     row = dict(name=tag, St_case=CASES[name][0], cpd=cpd, cells=info["cells"],
                dt=f"{info['dt']:.6g}", steps=len(r["t"]) - 1, U_release=f"{info['U_release']:.5g}",
-               U_in=f"{r['U_in']:.5g}", U_out=f"{r['U_out']:.5g}", e=f"{r['e']:.4f}",
-               e_spring=f"{r['e_spring']:.4f}",
-               St=f"{r['St']:.1f}", e_over_edry=f"{r['e'] / E_DRY:.4f}", master=f"{master:.4f}",
-               max_overlap_a=f"{r['max_overlap_a']:.4f}", wall_s=round(wall),
-               cpu_s=round(float(cpu[-1])) if cpu else "", host=socket.gethostname(),
-               date=time.strftime("%Y-%m-%d %H:%M"), commit=provenance())
+               wall_s=round(wall), cpu_s=round(float(cpu[-1])) if cpu else "",
+               host=socket.gethostname(), date=time.strftime("%Y-%m-%d %H:%M"),
+               commit=provenance(), **measured(r))
     print(f"  U_in {r['U_in']:.4f} m/s, St {r['St']:.1f}, e {r['e']:.3f}, e/e_dry "
           f"{r['e'] / E_DRY:.3f} (master curve {master:.3f}), max overlap "
           f"{r['max_overlap_a']:.3f} a, wall {wall:.0f} s", flush=True)
     if not quick:
         shutil.copy(h5, os.path.join(RESULTS, f"{tag}.h5"))
-    rows = [x for x in read_csv(out_csv) if x["name"] != tag] + [row]
-    os.makedirs(RESULTS, exist_ok=True)
-    with open(out_csv, "w", newline="") as f:
-        wr = csv.DictWriter(f, fieldnames=FIELDS)
-        wr.writeheader()
-        wr.writerows(rows)
+    write_rows(out_csv, FIELDS, [x for x in read_csv(out_csv) if x["name"] != tag] + [row])
 
 
 def read_csv(path):
@@ -210,12 +233,14 @@ def do_plot():
     if not rows:
         sys.exit("wetRebound: no runs in results/runs.csv")
     lines = ["| case | cells/d | U_in [m/s] | St | e | e/e_dry | exp(-35/St) | error | "
-             "e_spring/e_dry | max overlap/a | wall |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+             "e_spring/e_dry | J_coll | J_hydro | J_gravity | max overlap/a | wall |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in sorted(rows, key=lambda r: (int(r["cpd"]), float(r["St_case"]))):
         err = float(r["e_over_edry"]) - float(r["master"])
         lines.append(f"| St {r['St_case']} (Gondret) | {r['cpd']} | {float(r['U_in']):.3f} | "
                      f"{float(r['St']):.0f} | {float(r['e']):.3f} | {float(r['e_over_edry']):.3f} | "
                      f"{float(r['master']):.3f} | {err:+.3f} | {float(r['e_spring']) / E_DRY:.3f} | "
+                     f"{r['J_coll']} | {r['J_hydro']} | {r['J_gravity']} | "
                      f"{float(r['max_overlap_a']):.3f} | "
                      f"{r['wall_s']} s |")
     with open(os.path.join(RESULTS, "table.md"), "w") as f:
@@ -262,15 +287,8 @@ def do_collect():
     rows = read_csv(RUNS_CSV)
     for row in rows:
         name = row["name"].split("-c")[0]
-        r = analyse(os.path.join(RESULTS, f"{row['name']}.h5"), name)
-        row.update(U_in=f"{r['U_in']:.5g}", U_out=f"{r['U_out']:.5g}", e=f"{r['e']:.4f}",
-                   e_spring=f"{r['e_spring']:.4f}", St=f"{r['St']:.1f}",
-                   e_over_edry=f"{r['e'] / E_DRY:.4f}", master=f"{math.exp(-35 / r['St']):.4f}",
-                   max_overlap_a=f"{r['max_overlap_a']:.4f}")
-    with open(RUNS_CSV, "w", newline="") as f:
-        wr = csv.DictWriter(f, fieldnames=FIELDS, extrasaction="ignore")
-        wr.writeheader()
-        wr.writerows(rows)
+        row.update(measured(analyse(os.path.join(RESULTS, f"{row['name']}.h5"), name)))
+    write_rows(RUNS_CSV, FIELDS, rows)
     print(f"wetRebound: {len(rows)} runs re-analysed")
 
 

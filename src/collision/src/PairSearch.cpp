@@ -40,6 +40,11 @@ const std::vector<std::pair<int, int>>& PairSearch::find(const std::vector<Vec3>
     if (cells <= maxCells) break;
     cell *= std::cbrt(cells / maxCells) * 1.01;
   }
+  if (!((std::floor(span.x() / cell) + 1) * (std::floor(span.y() / cell) + 1) *
+            (std::floor(span.z() / cell) + 1) <= maxCells)) {
+    throw std::runtime_error("PairSearch: no cell size found for " + std::to_string(n) +
+                             " bodies spanning " + std::to_string(span.maxCoeff()));
+  }
   for (int d = 0; d < 3; ++d) dims_[d] = static_cast<int>(std::floor(span[d] / cell)) + 1;
   const int nCells = dims_[0] * dims_[1] * dims_[2];
 

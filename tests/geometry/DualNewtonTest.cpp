@@ -162,6 +162,41 @@ TEST(DualNewton, FewIterationsAndWarmStartHelps) {
   EXPECT_LT(warm, cold);
 }
 
+TEST(DualNewton, ColdStartIsNearlyExactForIdenticalParallelBodies) {
+  // E1 + (-E2) of two equal, equally oriented ellipsoids is the ellipsoid 2E1,
+  // so the cold start (the normal of an ellipsoid enclosing the sum, at the
+  // crossing of the centre line) is the answer's direction up to O(gap /
+  // curvature radius): at a gap of 1e-6 at most one Newton step to 1e-8,
+  // where the centre line itself needs more.
+  const DualNewton dual;
+  std::mt19937_64 rng(47);
+  long cold = 0, centreLine = 0;
+  for (int k = 0; k < 50; ++k) {
+    const Quat q = randomRotation(rng);
+    for (Scalar ar : {1.0 / 6, 6.0}) {
+      const Ellipsoid e1 = Ellipsoid::spheroid(ar, 1, Vec3::Zero(), q);
+      const Vec3 u = randomUnit(rng);
+      // t u on the surface of 2 E1 (x^T (4 P)^-1 x = 1), plus the gap
+      const Scalar touching = 2 / std::sqrt(u.dot(e1.shapeMatrix().inverse() * u));
+      const Ellipsoid e2 = Ellipsoid::spheroid(ar, 1, (touching + 1e-6) * u, q);
+      DistanceOptions o = eps(1e-8);
+      const DistanceResult r = dual.distance(e1, e2, o);
+      ASSERT_EQ(r.status, DistanceStatus::converged);
+      EXPECT_LE(r.iterations, 1) << "Ar " << ar << " k " << k;
+      EXPECT_GT(r.distance, 0);
+      EXPECT_LE(r.distance, 1e-6 + 1e-12);
+      cold += r.iterations;
+      o.useInitialDirection = true;
+      o.initialDirection = u;
+      const DistanceResult c = dual.distance(e1, e2, o);
+      ASSERT_EQ(c.status, DistanceStatus::converged);
+      EXPECT_NEAR(c.distance, r.distance, 1e-8);
+      centreLine += c.iterations;
+    }
+  }
+  EXPECT_LT(2 * cold, centreLine) << "cold " << cold << ", from the centre line " << centreLine;
+}
+
 TEST(DualNewton, ConcentricBodiesAreOverlappingWithTheThinnestDirection) {
   const DualNewton dual;
   const Ellipsoid e1(Vec3(3, 2, 1), Vec3::Zero(), Quat::Identity());

@@ -180,6 +180,7 @@ struct PairSetup {
   Scalar roundingL;  // rounding of L = n.dr - s1 - s2
   Scalar epsD, epsStop;
   int maxIterations;
+  bool spheres;    // both bodies spheres: the centre line is the answer's direction
 
   PairSetup(const Ellipsoid& e1, const Ellipsoid& e2, const DistanceOptions& options)
       : P1(e1.shapeMatrix()), P2(e2.shapeMatrix()), dr(Vec3(e2.centre() - e1.centre())) {
@@ -190,15 +191,52 @@ struct PairSetup {
     epsD = options.epsD;
     epsStop = options.epsD - 2 * allow;
     maxIterations = options.maxIterations > 0 ? options.maxIterations : DualNewton::kDefaultMaxIterations;
+    spheres = e1.minSemiAxis() == e1.maxSemiAxis() && e2.minSemiAxis() == e2.maxSemiAxis();
   }
 };
 
-/// The first iterate: the given direction, or the centre line.
+/**
+ * Cold start: the normal, at the centre line, of an ellipsoid enclosing the
+ * Minkowski sum E1 + (-E2) and touching it there. With s_m the support radii
+ * along u = dr/|dr|, M = (s1 + s2)(P1/s1 + P2/s2) has support >= s1 + s2 in
+ * every direction (Cauchy-Schwarz), with equality along u; the outward normal
+ * of x^T M^-1 x = const at the point on the centre line is M^-1 dr. Near
+ * touching (the queries that matter) the closest points lie close to where the
+ * centre line crosses the sum, so this normal is a far better first n than u
+ * itself for elongated bodies (about one Newton step fewer per packing query:
+ * docs/benchmarks.md; for spheres it is the centre line, which is skipped).
+ * Costs two square roots and a 3x3 adjugate; M^-1 dr is used unnormalised
+ * (evaluateDirection normalises).
+ */
+V3 centreLineNormal(const PairSetup& p) {
+  const V3 y1 = p.P1 * p.dr, y2 = p.P2 * p.dr;
+  const Scalar i1 = 1 / std::sqrt(dot(p.dr, y1)), i2 = 1 / std::sqrt(dot(p.dr, y2));
+  // M up to a positive factor: P1/s1 + P2/s2 = |dr| (P1 i1 + P2 i2)
+  const Scalar a00 = p.P1.xx * i1 + p.P2.xx * i2, a01 = p.P1.xy * i1 + p.P2.xy * i2;
+  const Scalar a02 = p.P1.xz * i1 + p.P2.xz * i2, a11 = p.P1.yy * i1 + p.P2.yy * i2;
+  const Scalar a12 = p.P1.yz * i1 + p.P2.yz * i2, a22 = p.P1.zz * i1 + p.P2.zz * i2;
+  // adj(M) dr = det(M) M^-1 dr, det(M) > 0 (M is positive definite)
+  const Scalar c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
+  const Scalar c11 = a00 * a22 - a02 * a02, c12 = a01 * a02 - a00 * a12, c22 = a00 * a11 - a01 * a01;
+  const V3& d = p.dr;
+  return {c00 * d.x + c01 * d.y + c02 * d.z, c01 * d.x + c11 * d.y + c12 * d.z,
+          c02 * d.x + c12 * d.y + c22 * d.z};
+}
+
+/// The first iterate: the given direction, or the normal of the centre line's crossing.
 void start(const PairSetup& p, const Ellipsoid& e1, const DistanceOptions& options, DualPoint& cur) {
   if (options.useInitialDirection) {
     cur.evaluate(p.P1, p.P2, p.dr, Vec3(options.initialDirection.normalized()));
+  } else if (p.drNorm > 0 && p.spheres) {
+    cur.evaluateDirection(p.P1, p.P2, p.dr, p.dr);  // exact: M is isotropic
   } else if (p.drNorm > 0) {
-    cur.evaluateDirection(p.P1, p.P2, p.dr, p.dr);  // normalised on the way
+    const V3 m = centreLineNormal(p);
+    // a degenerate M (flat bodies to rounding) falls back to the centre line
+    if (std::isfinite(m.x + m.y + m.z) && dot(m, p.dr) > 0) {
+      cur.evaluateDirection(p.P1, p.P2, p.dr, m);
+    } else {
+      cur.evaluateDirection(p.P1, p.P2, p.dr, p.dr);  // normalised on the way
+    }
   } else {
     cur.evaluate(p.P1, p.P2, p.dr, Vec3(e1.rotation().col(0)));  // concentric: any direction
   }

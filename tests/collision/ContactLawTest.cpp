@@ -37,7 +37,7 @@ TEST(ContactLaw, FrictionOpposesSlipAndNeverReversesItInAStep) {
   const Vec3 n = -Vec3::UnitZ();  // from body 1 to the wall below
   const Vec3 relative(-1e-3, 0, 0);  // wall relative to body: body slides along +x
   // on the wall (body 2) the friction acts along the body's slip, on the body against it
-  const Vec3 f = contactForce(1e-3, n, relative, law, s1, wall, 0.5, 1e-3);
+  const Vec3 f = contactForce(law.stiffness * 1e-3, n, relative, law, s1, wall, 0.5, 1e-3);
   EXPECT_NEAR(f.z(), -10, 1e-12);
   EXPECT_GT(f.x(), 0);
   const Scalar wt = inverseEffectiveMass(s1, wall, Vec3::UnitX());

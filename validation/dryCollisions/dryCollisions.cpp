@@ -421,9 +421,9 @@ void headOnSet(const Options& o, Checks& checks, bool wall) {
 
 void spheroidWall(const Options& o, Checks& checks) {
   const std::vector<Scalar> ars =
-      o.quick ? std::vector<Scalar>{1.0 / 6, 6} : std::vector<Scalar>{1.0 / 6, 1.0 / 3, 3, 6};
+      std::vector<Scalar>{1.0 / 6, 1.0 / 3, 3, 6};
   const std::vector<Scalar> tilts =
-      o.quick ? std::vector<Scalar>{0, 30, 60, 90} : std::vector<Scalar>{0, 15, 30, 45, 60, 75, 90};
+      o.quick ? std::vector<Scalar>{0, 15, 60, 75, 90} : std::vector<Scalar>{0, 15, 30, 45, 60, 75, 90};
   const std::vector<Scalar> es{0.97, 0.5};
   const std::vector<int> ns = o.quick ? std::vector<int>{10} : std::vector<int>{10, 20, 50};
   // slow, slower: contact time T_c (uncapped; the body turns through
@@ -431,7 +431,7 @@ void spheroidWall(const Options& o, Checks& checks) {
   // the contact to pi maxOverlap a_min / u (the overlap reaches ~0.1 a_min,
   // the body turns through up to ~0.25 rad)
   const std::vector<std::pair<std::string, Scalar>> speeds =
-      o.quick ? std::vector<std::pair<std::string, Scalar>>{{"slow", 0.005}}
+      o.quick ? std::vector<std::pair<std::string, Scalar>>{{"slow", 0.005}, {"fast", 1.0}}
               : std::vector<std::pair<std::string, Scalar>>{
                     {"slower", 0.0005}, {"slow", 0.005}, {"fast", 1.0}};
   std::ofstream csv =
@@ -814,13 +814,13 @@ void extremes(const Options& o, Checks& checks) {
   // out of it (z). The offset along y is f times the grazing offset b_g (the
   // approach then just touches): f = 0.999 is a grazing impact.
   const std::vector<Scalar> alphas =
-      o.quick ? std::vector<Scalar>{1, 90} : std::vector<Scalar>{0, 1, 5, 20, 90};
+      o.quick ? std::vector<Scalar>{1, 20, 90} : std::vector<Scalar>{0, 1, 5, 20, 90};
   const std::vector<std::string> axes = o.quick ? std::vector<std::string>{"x", "z"}
                                                 : std::vector<std::string>{"x", "xy45", "y", "z"};
   const std::vector<Scalar> fractions =
-      o.quick ? std::vector<Scalar>{0.5, 0.999} : std::vector<Scalar>{0, 0.5, 0.9, 0.99, 0.999};
+      o.quick ? std::vector<Scalar>{0, 0.9, 0.999} : std::vector<Scalar>{0, 0.5, 0.9, 0.99, 0.999};
   const std::vector<Scalar> speeds =
-      o.quick ? std::vector<Scalar>{0.01, 100} : std::vector<Scalar>{0.01, 0.1, 1, 10, 100};
+      o.quick ? std::vector<Scalar>{0.01, 1, 100} : std::vector<Scalar>{0.01, 0.1, 1, 10, 100};
   const std::vector<Scalar> gaps =
       o.quick ? std::vector<Scalar>{1e-6, -1e-6} : std::vector<Scalar>{1e-6, 0, -1e-6};
   const std::vector<Scalar> frictions =

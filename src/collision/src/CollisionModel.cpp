@@ -79,7 +79,7 @@ CollisionModel::CollisionModel(const CollisionSettings& settings, std::vector<Pl
 
 void CollisionModel::clearHistory() {
   direction_.clear();
-  contactTime_.clear();
+  contact_.clear();
 }
 
 std::vector<PairRecord> CollisionModel::history() const {
@@ -95,7 +95,13 @@ std::vector<PairRecord> CollisionModel::history() const {
     r.warm = true;
     r.direction = d;
   }
-  for (const auto& [k, tc] : contactTime_) record(k).contactTime = tc;
+  for (const auto& [k, c] : contact_) {
+    PairRecord& r = record(k);
+    r.contactTime = c.contactTime;
+    r.springForce = c.springForce;
+    r.stiffness = c.stiffness;
+    r.overlap = c.overlap;
+  }
   std::vector<PairRecord> out;
   out.reserve(merged.size());
   for (const auto& kv : merged) out.push_back(kv.second);
@@ -116,8 +122,14 @@ void CollisionModel::setHistory(const std::vector<PairRecord>& records) {
             "pair history " + pair + ": contact time must be >= 0");
     require(!r.warm || (r.direction.allFinite() && r.direction.norm() > 0),
             "pair history " + pair + ": the warm-start direction must be finite and non-zero");
+    require(std::isfinite(r.springForce) && r.springForce >= 0 && std::isfinite(r.stiffness) &&
+                r.stiffness >= 0 && std::isfinite(r.overlap) && r.overlap >= 0,
+            "pair history " + pair + ": spring force, stiffness and overlap must be finite and >= 0");
     if (r.warm) direction_[key(r.first, r.second)] = r.direction;
-    if (r.contactTime > 0) contactTime_[key(r.first, r.second)] = r.contactTime;
+    if (r.contactTime > 0) {
+      contact_[key(r.first, r.second)] =
+          ContactState{r.contactTime, r.springForce, r.stiffness, r.overlap};
+    }
   }
 }
 
@@ -142,7 +154,7 @@ int CollisionModel::subSteps(const std::vector<CollisionBody>& bodies, Scalar dt
   Scalar tc = contactTime;
   if (vRel > 0) tc = std::min(tc, kPi * settings_.maxOverlap * aMin / vRel);
   // the contacts under way keep the contact time they started with
-  for (const auto& kv : contactTime_) tc = std::min(tc, kv.second);
+  for (const auto& kv : contact_) tc = std::min(tc, kv.second.contactTime);
   const Scalar n = std::ceil(dt * settings_.subStepsPerContact / tc - 1e-9);
   if (!(n <= settings_.maxSubSteps)) {
     throw std::runtime_error("collision: " + std::to_string(n) +
@@ -182,7 +194,7 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
     halfExtent_[i] = grown_[i].shapeMatrix().diagonal().cwiseSqrt();
   }
   nextDirection_.clear();
-  nextContactTime_.clear();
+  nextContact_.clear();
 
   const auto& pairs = search_.find(centres_, radii_);
   statistics_.candidatePairs += static_cast<long>(pairs.size());
@@ -243,7 +255,7 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
   }
 
   direction_.swap(nextDirection_);
-  contactTime_.swap(nextContactTime_);
+  contact_.swap(nextContact_);
   for (int i = 0; i < n; ++i) {
     if (!force[i].allFinite() || !torque[i].allFinite()) {
       throw std::runtime_error("collision: non-finite collision force on body " + std::to_string(i));
@@ -271,22 +283,51 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
   Vec3 f2 = Vec3::Zero();  // on body 2 (or the wall)
 
   if (gap < 0) {
+    const Scalar overlap = -gap;
+    const Scalar cap = settings_.maxOverlap * aMin;
     const std::uint64_t k = key(i, j);
-    const auto known = contactTime_.find(k);
-    Scalar tc = contactTime;
-    if (known != contactTime_.end()) {
-      tc = known->second;
-    } else if (un < 0) {
-      tc = std::min(tc, kPi * settings_.maxOverlap * aMin / -un);
+    const auto known = contact_.find(k);
+    ContactState c;
+    if (known != contact_.end()) {
+      c = known->second;
+    } else {
+      c.contactTime = contactTime;
+      if (un < 0) c.contactTime = std::min(c.contactTime, kPi * cap / -un);
     }
-    nextContactTime_[k] = tc;
     const Scalar wInv = inverseEffectiveMass(s1, s2, n);
     if (wInv > 0) {
-      const SpringDashpot law = springDashpot(1 / wInv, settings_.contact.restitution, tc);
-      f2 += contactForce(-gap, n, relative, law, s1, s2, settings_.contact.friction, subDt);
+      const Scalar e = settings_.contact.restitution;
+      const Scalar lnE = std::log(e);
+      SpringDashpot law;
+      if (c.stiffness > 0) {
+        // the spring-dashpot of the first touch (a fixed linear oscillator)
+        law.stiffness = c.stiffness;
+        law.damping = -2 * lnE * c.stiffness * c.contactTime / (kPi * kPi + lnE * lnE);
+        c.springForce = std::max(Scalar(0), c.springForce + law.stiffness * (overlap - c.overlap));
+      } else {
+        law = springDashpot(1 / wInv, e, c.contactTime);  // the first touch (or an old restart)
+        c.springForce = law.stiffness * overlap;
+      }
+      // still approaching faster than the contact time was made for (a body
+      // swinging into the contact): the first touch's rule at the new speed,
+      // for the overlap still allowed (at least half the cap); dF = k d(delta)
+      // keeps the stiffer spring from returning more work than it took
+      const Scalar left = std::max(cap - overlap, Scalar(0.5) * cap);
+      if (un < 0 && kPi * cap < -un * c.contactTime && kPi * left < -un * c.contactTime) {
+        const Scalar shorter = kPi * left / -un;
+        const Scalar ratio = c.contactTime / shorter;
+        law.stiffness *= ratio * ratio;
+        law.damping *= ratio;
+        c.contactTime = shorter;
+        ++statistics_.stiffened;
+      }
+      c.stiffness = law.stiffness;
+      c.overlap = overlap;
+      f2 += contactForce(c.springForce, n, relative, law, s1, s2, settings_.contact.friction, subDt);
     }
+    nextContact_[k] = c;
     ++(wall ? statistics_.wallContacts : statistics_.contacts);
-    statistics_.maxOverlapRatio = std::max(statistics_.maxOverlapRatio, -gap / aMin);
+    statistics_.maxOverlapRatio = std::max(statistics_.maxOverlapRatio, overlap / aMin);
   }
 
   // lubrication; the curvature radii only when the gap is below the largest

@@ -39,11 +39,14 @@ SpringDashpot springDashpot(Scalar effectiveMass, Scalar restitution, Scalar con
   return law;
 }
 
-Vec3 contactForce(Scalar delta, const Vec3& n, const Vec3& relativeVelocity,
+Vec3 contactForce(Scalar elasticForce, const Vec3& n, const Vec3& relativeVelocity,
                   const SpringDashpot& law, const ContactSide& s1, const ContactSide& s2,
                   Scalar friction, Scalar dt) {
   const Scalar un = relativeVelocity.dot(n);
-  const Scalar fn = law.stiffness * delta - law.damping * un;
+  Scalar fn = elasticForce - law.damping * un;
+  // the dashpot's tensile end belongs to the spring's unloading: once the
+  // elastic force is spent (a stiffness that rose in the contact), no pull
+  if (!(elasticForce > 0) && fn < 0) fn = 0;
   Vec3 force = fn * n;
   if (friction > 0) {
     const Vec3 ut = relativeVelocity - un * n;

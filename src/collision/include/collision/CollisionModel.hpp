@@ -19,11 +19,22 @@
  *     smaller of the two bodies' smallest Gaussian curvature radii (founding
  *     paper eq. 1.6), warm-started from the pair's previous direction;
  *  4. contact (ContactLaw) at the midpoint of the two deepest points, with the
- *     pair's contact time fixed at the first touch:
+ *     pair's contact time set at the first touch,
  *         T_c = min(contactTime, pi maxOverlap a_min / |u_n|),
  *     a_min the smaller smallest semi-axis, u_n the impact speed: the overlap
  *     of the linear law stays below v T_c/pi <= maxOverlap a_min, so that fast
- *     bodies cannot pass through each other or a wall;
+ *     bodies cannot pass through each other or a wall. k_n and eta_n are
+ *     those of the effective mass at the first touch and stay fixed for the
+ *     contact (a linear oscillator: its spring is conservative even while a
+ *     turning spheroid moves the contact point; with k_n following the moving
+ *     point's effective mass such impacts gained up to 6 % kinetic energy).
+ *     While the bodies approach, the first touch's rule is applied again at
+ *     every call: a body swinging into the contact after the touch (normal
+ *     speed above the one T_c was made for) shortens T_c to pi D / |u_n|, D
+ *     the overlap still allowed (at least half the cap), stiffening the
+ *     spring from then on; the elastic force is integrated as dF = k_n
+ *     d(delta) so that the stiffer spring never returns more work than it
+ *     took (with the dashpot's pull off once F is spent);
  *  5. lubrication (LubricationLaw) with the Gaussian curvature radii at the
  *     closest points, between the activation and saturation gaps, held at its
  *     saturated value down to touching and off in contact (overlap);
@@ -38,11 +49,6 @@
  * e 0.97 -0.75 % at 10, -0.17 % at 20; e 0.5 -3.4 % at 20, -1.4 % at 50; the
  * medians are below 0.1 % from 20 for e >= 0.5; with the start forces only the
  * error is ~ 1.6/subStepsPerContact).
- * Known limits (measured there): k_n follows the effective mass of the moving
- * contact point, so a capped impact of a turning spheroid can gain kinetic
- * energy (up to 6 % in a fast tilted wall impact); the overlap cap uses the
- * normal speed at the first touch, so a body swinging into the contact can
- * exceed maxOverlap (0.22 a_min worst, tip-on Ar 6 against Ar 1/6).
  * Non-convergence of a distance is never silent: it is counted in
  * statistics() (the last iterate is used, its certified bracket known) and a
  * non-finite force throws.
@@ -112,6 +118,7 @@ struct CollisionStatistics {
   long contacts = 0;              ///< body-body contacts
   long wallContacts = 0;
   long lubricated = 0;            ///< pairs and wall pairs with a lubrication force
+  long stiffened = 0;             ///< contact evaluations that raised k_n to keep the overlap cap
   Scalar maxOverlapRatio = 0;     ///< max overlap / smallest semi-axis of the pair
 };
 
@@ -122,6 +129,11 @@ struct PairRecord {
   bool warm = false;              ///< has a warm-start direction (body pairs)
   Vec3 direction = Vec3::Zero();  ///< the pair's last distance direction
   Scalar contactTime = 0;         ///< > 0: in contact, with this contact time
+  /// the contact's spring state (contactTime > 0): elastic force, the stiffness
+  /// and the overlap of the last call; stiffness 0 = start from k delta
+  Scalar springForce = 0;
+  Scalar stiffness = 0;
+  Scalar overlap = 0;
 };
 
 class CollisionModel {
@@ -163,7 +175,7 @@ class CollisionModel {
   void setHistory(const std::vector<PairRecord>& records);
 
   /// Pairs in contact now (body-body and body-wall; walls are -1 - wall index).
-  std::size_t activeContacts() const { return contactTime_.size(); }
+  std::size_t activeContacts() const { return contact_.size(); }
 
  private:
   static std::uint64_t key(int i, int j) {
@@ -187,8 +199,15 @@ class CollisionModel {
   std::vector<Vec3> halfExtent_;  ///< axis-aligned half extents of grown_
   /// warm-start direction of each pair seen last call
   std::unordered_map<std::uint64_t, Vec3> direction_, nextDirection_;
-  /// contact time of each pair in contact
-  std::unordered_map<std::uint64_t, Scalar> contactTime_, nextContactTime_;
+  /// What a contact under way carries from call to call.
+  struct ContactState {
+    Scalar contactTime = 0;  ///< T_c of the contact (shortened if the overlap needs it)
+    Scalar springForce = 0;  ///< elastic normal force, updated incrementally
+    Scalar stiffness = 0;    ///< k_n of the contact (0: set at the next call)
+    Scalar overlap = 0;      ///< overlap of the last call
+  };
+  /// the state of each pair in contact
+  std::unordered_map<std::uint64_t, ContactState> contact_, nextContact_;
   CollisionStatistics statistics_;
 };
 

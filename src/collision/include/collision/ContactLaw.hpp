@@ -16,6 +16,9 @@
  * the contact point is still e (with 1/m_eff = 1/m_1 + 1/m_2 it is not).
  * The law is kept to the end of the contact (delta back to 0), the short
  * tensile end of the linear law included: it is what makes the restitution e.
+ * m_eff changes while a turning body moves the contact point; CollisionModel
+ * keeps k_n and eta_n of the first touch for the whole contact (a k_n that
+ * follows m_eff is not conservative).
  * Tangential: F_t = -min(mu |F_n|, m_t |u_t|/dt) t, t = u_t/|u_t| the slip
  * direction at the contact point and m_t its effective mass along t: Coulomb
  * sliding friction that at most stops the slip within the sub-step dt (no
@@ -58,12 +61,14 @@ struct SpringDashpot {
 SpringDashpot springDashpot(Scalar effectiveMass, Scalar restitution, Scalar contactTime);
 
 /**
- * The contact force on body 2 (body 1 gets minus it).
- * @param delta overlap (> 0 in contact)
+ * The contact force on body 2 (body 1 gets minus it): (F_e - eta_n u_n) n plus friction.
+ * @param elasticForce the spring's force F_e >= 0: k_n delta for a constant
+ *        stiffness (CollisionModel integrates it incrementally, see there);
+ *        at F_e = 0 the dashpot may push but not pull
  * @param n unit normal from 1 to 2
  * @param relativeVelocity (v_2 - v_1) at the contact point
  */
-Vec3 contactForce(Scalar delta, const Vec3& n, const Vec3& relativeVelocity,
+Vec3 contactForce(Scalar elasticForce, const Vec3& n, const Vec3& relativeVelocity,
                   const SpringDashpot& law, const ContactSide& s1, const ContactSide& s2,
                   Scalar friction, Scalar dt);
 

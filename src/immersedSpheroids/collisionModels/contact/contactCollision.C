@@ -431,21 +431,40 @@ void Foam::collisionModels::contact::report(const label nSubSteps)
 
 void Foam::collisionModels::contact::readHistory(const dictionary& dict)
 {
-    const List<FixedList<scalar, 7>> records =
-        immersedSpheroids::readCheckedOrDefault<List<FixedList<scalar, 7>>>
+    // (first second warm dx dy dz contactTime springForce stiffness overlap);
+    // the 7-entry form of earlier versions starts the spring from k delta
+    const List<scalarList> records =
+        immersedSpheroids::readCheckedOrDefault<List<scalarList>>
         (
-            dict, "collisionPairs", List<FixedList<scalar, 7>>(),
-            "a list of (first second warm dx dy dz contactTime)"
+            dict, "collisionPairs", List<scalarList>(),
+            "a list of (first second warm dx dy dz contactTime springForce"
+            " stiffness overlap)"
         );
     std::vector<collision::PairRecord> history;
-    for (const FixedList<scalar, 7>& r : records)
+    for (const scalarList& r : records)
     {
+        if (r.size() != 10 && r.size() != 7)
+        {
+            immersedSpheroids::entryError
+            (
+                dict, "collisionPairs",
+                "a record has " + std::to_string(r.size()) + " entries; allowed:"
+                " 10 (first second warm dx dy dz contactTime springForce"
+                " stiffness overlap) or 7 (without the last three)"
+            );
+        }
         collision::PairRecord p;
         p.first = label(r[0]);
         p.second = label(r[1]);
         p.warm = r[2] > 0.5;
         p.direction = collision::Vec3(r[3], r[4], r[5]);
         p.contactTime = r[6];
+        if (r.size() == 10)
+        {
+            p.springForce = r[7];
+            p.stiffness = r[8];
+            p.overlap = r[9];
+        }
         history.push_back(p);
     }
     try
@@ -462,14 +481,15 @@ void Foam::collisionModels::contact::readHistory(const dictionary& dict)
 void Foam::collisionModels::contact::writeHistory(Ostream& os) const
 {
     const std::vector<collision::PairRecord> history = model_.history();
-    List<FixedList<scalar, 7>> records(label(history.size()));
+    List<FixedList<scalar, 10>> records(label(history.size()));
     forAll(records, i)
     {
         const collision::PairRecord& p = history[i];
-        records[i] = FixedList<scalar, 7>
+        records[i] = FixedList<scalar, 10>
         ({
             scalar(p.first), scalar(p.second), p.warm ? 1.0 : 0.0,
-            p.direction.x(), p.direction.y(), p.direction.z(), p.contactTime
+            p.direction.x(), p.direction.y(), p.direction.z(), p.contactTime,
+            p.springForce, p.stiffness, p.overlap
         });
     }
     os.writeEntry("collisionPairs", records);

@@ -3,7 +3,7 @@
 the five cases of physics-references.md section 2, e/e_dry against St and the
 master curve e/e_dry = exp(-35/St) (Legendre et al.).
 
-    wetRebound.py run [--case NAME ...] [--cpd N] [--force] [--quick]
+    wetRebound.py run [--case NAME ...] [--cpd N] [--max-overlap X] [--force] [--quick]
     wetRebound.py plot
     wetRebound.py collect
 
@@ -24,7 +24,9 @@ the wall (gap >= 0 after the contact), e = U_out/U_in, St = rho_p U_in d/(9 mu);
 e_spring (the largest speed at any time after the touch, at the end of the
 stretched spring phase, before the film resists the separation) is reported too,
 with the impulses of the collision force, the hydrodynamic force and the net weight
-over the steps with a collision force, over m U_in (J_coll, J_hydro, J_gravity). Fixed step dt = 0.4 h/U.
+over the steps with a collision force, over m U_in (J_coll, J_hydro, J_gravity), the part of
+J_hydro while the sphere already moves up (J_hydro_out) and the strongest downward
+hydrodynamic force then over the largest collision force (suction). Fixed step dt = 0.4 h/U.
 Collision: lubricationContact (e_dry 0.97, T_c = 10 dt, 10 sub-steps per contact,
 activation 0.075 a, saturation 1e-3 a), penaltyRatio 1e-3, virtualMass 0.5.
 """
@@ -56,9 +58,9 @@ CASES = {
     "St742": (742, 788, 920.0, 0.005, 5e-3),
 }
 
-FIELDS = ["name", "St_case", "cpd", "cells", "dt", "steps", "U_release", "U_in", "U_out", "e",
+FIELDS = ["name", "St_case", "cpd", "maxOverlap", "cells", "dt", "steps", "U_release", "U_in", "U_out", "e",
           "e_spring",
-          "St", "e_over_edry", "master", "max_overlap_a", "J_coll", "J_hydro", "J_gravity", "wall_s", "cpu_s", "host", "date",
+          "St", "e_over_edry", "master", "max_overlap_a", "J_coll", "J_hydro", "J_gravity", "J_hydro_out", "suction", "wall_s", "cpu_s", "host", "date",
           "commit"]
 
 
@@ -83,7 +85,7 @@ def sub(path, pattern, repl):
         f.write(s2)
 
 
-def write_case(case, name, cpd, end_factor=1.0):
+def write_case(case, name, cpd, end_factor=1.0, max_overlap=None):
     st, re_, rho_f, mu, d = CASES[name]
     a = d / 2
     u = 9 * st * mu / (RHO_P * d)
@@ -117,6 +119,9 @@ def write_case(case, name, cpd, end_factor=1.0):
     sub(p, r"semiAxes .*$", f"semiAxes        ({a:g} {a:g} {a:g});")
     sub(p, r"centre .*$", f"centre          ({lx / 2:g} {lx / 2:g} {a + 2 * d:g});")
     sub(p, r"velocity .*$", f"velocity        (0 0 {-u:.6g});")
+    if max_overlap is not None:
+        sub(p, r"^    restitution     0.97;$",
+            f"    restitution     0.97;\n    maxOverlap      {max_overlap:g};")
     return dict(dt=dt, cells=nx * nx * nz, U_release=u, end=end)
 
 
@@ -158,10 +163,17 @@ def analyse(h5, name):
     j_coll = np.sum(fc[i0:i1 + 1]) * dt / momentum
     j_hydro = np.sum(fh[i0:i1 + 1]) * dt / momentum
     j_gravity = -(RHO_P - rho_f) * volume * 9.81 * (i1 + 1 - i0) * dt / momentum
+    # the part of J_hydro while the sphere already moves up (leaves the wall),
+    # and the strongest downward hydrodynamic force then, over the largest
+    # collision force
+    up = np.arange(i0, i1 + 1)[w[i0:i1 + 1] > 0]
+    j_hydro_out = np.sum(fh[up]) * dt / momentum
+    suction = max(-fh[up].min(), 0.0) / fc[i0:i1 + 1].max() if len(up) else 0.0
     return dict(t=t, gap=gap / d, w=w, U_in=u_in, U_out=u_out, e=u_out / u_in,
                 e_spring=u_spring / u_in,
                 St=RHO_P * u_in * d / (9 * mu), max_overlap_a=max(-gap.min(), 0) / a,
-                J_coll=j_coll, J_hydro=j_hydro, J_gravity=j_gravity)
+                J_coll=j_coll, J_hydro=j_hydro, J_gravity=j_gravity, J_hydro_out=j_hydro_out,
+                suction=suction)
 
 
 def measured(r):
@@ -170,7 +182,8 @@ def measured(r):
                 e_spring=f"{r['e_spring']:.4f}", St=f"{r['St']:.1f}",
                 e_over_edry=f"{r['e'] / E_DRY:.4f}", master=f"{math.exp(-35 / r['St']):.4f}",
                 max_overlap_a=f"{r['max_overlap_a']:.4f}", J_coll=f"{r['J_coll']:.3f}",
-                J_hydro=f"{r['J_hydro']:.3f}", J_gravity=f"{r['J_gravity']:.3f}")
+                J_hydro=f"{r['J_hydro']:.3f}", J_gravity=f"{r['J_gravity']:.3f}",
+                J_hydro_out=f"{r['J_hydro_out']:.3f}", suction=f"{r['suction']:.3f}")
 
 
 def write_rows(path, fields, rows):
@@ -182,15 +195,15 @@ def write_rows(path, fields, rows):
         wr.writerows(rows)
 
 
-def run_one(name, cpd, force, quick):
+def run_one(name, cpd, force, quick, max_overlap=None):
     out_csv = os.path.join(RESULTS, "quick.csv") if quick else RUNS_CSV
-    tag = f"{name}-c{cpd}"
+    tag = f"{name}-c{cpd}" + (f"-ov{max_overlap:g}" if max_overlap is not None else "")
     rows = read_csv(out_csv)
     if not force and not quick and any(r["name"] == tag for r in rows):
         print(f"{tag}: in {os.path.relpath(out_csv, HERE)}, skipped")
         return
     case = os.path.join(HERE, "run", tag)
-    info = write_case(case, name, cpd)
+    info = write_case(case, name, cpd, max_overlap=max_overlap)
     print(f"{tag}: {info['cells']} cells, dt {info['dt']:.3g} s, end {info['end']:.3g} s", flush=True)
     start = time.time()
     with open(os.path.join(case, "log.Allrun"), "w") as log:
@@ -205,7 +218,8 @@ def run_one(name, cpd, force, quick):
     h5 = os.path.join(case, "postProcessing", "immersedBodies", "bodies.h5")
     r = analyse(h5, name)
     master = math.exp(-35 / r["St"])
-    row = dict(name=tag, St_case=CASES[name][0], cpd=cpd, cells=info["cells"],
+    row = dict(name=tag, St_case=CASES[name][0], cpd=cpd,
+               maxOverlap=f"{max_overlap if max_overlap is not None else 0.1:g}", cells=info["cells"],
                dt=f"{info['dt']:.6g}", steps=len(r["t"]) - 1, U_release=f"{info['U_release']:.5g}",
                wall_s=round(wall), cpu_s=round(float(cpu[-1])) if cpu else "",
                host=socket.gethostname(), date=time.strftime("%Y-%m-%d %H:%M"),
@@ -232,15 +246,22 @@ def do_plot():
     rows = read_csv(RUNS_CSV)
     if not rows:
         sys.exit("wetRebound: no runs in results/runs.csv")
-    lines = ["| case | cells/d | U_in [m/s] | St | e | e/e_dry | exp(-35/St) | error | "
-             "e_spring/e_dry | J_coll | J_hydro | J_gravity | max overlap/a | wall |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
-    for r in sorted(rows, key=lambda r: (int(r["cpd"]), float(r["St_case"]))):
+    lines = ["| case | cells/d | maxOverlap | U_in [m/s] | St | e | e/e_dry | exp(-35/St) | error | "
+             "e_spring/e_dry | J_coll | J_hydro | J_gravity | J_hydro_out | suction | "
+             "max overlap/a | wall |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        r.setdefault("maxOverlap", "")
+        r["maxOverlap"] = r["maxOverlap"] or "0.1"
+    rows.sort(key=lambda r: (int(r["cpd"]), -float(r["maxOverlap"]), float(r["St_case"])))
+    for r in rows:
         err = float(r["e_over_edry"]) - float(r["master"])
-        lines.append(f"| St {r['St_case']} (Gondret) | {r['cpd']} | {float(r['U_in']):.3f} | "
+        lines.append(f"| St {r['St_case']} (Gondret) | {r['cpd']} | {r['maxOverlap']} | "
+                     f"{float(r['U_in']):.3f} | "
                      f"{float(r['St']):.0f} | {float(r['e']):.3f} | {float(r['e_over_edry']):.3f} | "
                      f"{float(r['master']):.3f} | {err:+.3f} | {float(r['e_spring']) / E_DRY:.3f} | "
                      f"{r['J_coll']} | {r['J_hydro']} | {r['J_gravity']} | "
+                     f"{r.get('J_hydro_out', '-')} | {r.get('suction', '-')} | "
                      f"{float(r['max_overlap_a']):.3f} | "
                      f"{r['wall_s']} s |")
     with open(os.path.join(RESULTS, "table.md"), "w") as f:
@@ -250,12 +271,13 @@ def do_plot():
     fig, ax = plt.subplots(figsize=(6, 4))
     st = np.logspace(0.7, 3.2, 200)
     ax.semilogx(st, np.exp(-35 / st), "k-", label="exp(-35/St) (Legendre et al.)")
-    for cpd in sorted({int(r["cpd"]) for r in rows}):
-        sel = [r for r in rows if int(r["cpd"]) == cpd]
+    for cpd, ov in sorted({(int(r["cpd"]), r["maxOverlap"]) for r in rows}):
+        sel = [r for r in rows if int(r["cpd"]) == cpd and r["maxOverlap"] == ov]
+        what = f"{cpd} cells/d, maxOverlap {ov}"
         ax.semilogx([float(r["St"]) for r in sel], [float(r["e_over_edry"]) for r in sel], "o",
-                    label=f"after leaving the wall, {cpd} cells/d")
+                    label=f"after leaving the wall, {what}")
         ax.semilogx([float(r["St"]) for r in sel], [float(r["e_spring"]) / E_DRY for r in sel], "^",
-                    mfc="none", label=f"end of the spring phase, {cpd} cells/d")
+                    mfc="none", label=f"end of the spring phase, {what}")
     ax.set_xlabel("St = rho_p U_in d / (9 mu)")
     ax.set_ylabel("e / e_dry")
     ax.set_ylim(0, 1.05)
@@ -298,6 +320,8 @@ def main():
     r = sp.add_parser("run")
     r.add_argument("--case", action="append", default=[], choices=sorted(CASES))
     r.add_argument("--cpd", type=int, default=12)
+    r.add_argument("--max-overlap", type=float, default=None,
+                   help="collision maxOverlap (default: the library's, 0.1); its own rows")
     r.add_argument("--force", action="store_true")
     r.add_argument("--quick", action="store_true")
     sp.add_parser("plot")
@@ -312,11 +336,13 @@ def main():
         return
     if args.cpd < 4 or args.cpd > 64:
         sys.exit(f"wetRebound: --cpd {args.cpd}: allowed 4 to 64 cells per diameter")
+    if args.max_overlap is not None and not 0 < args.max_overlap <= 0.5:
+        sys.exit(f"wetRebound: --max-overlap {args.max_overlap}: allowed (0, 0.5]")
     if args.quick:
         run_one("St152", 6, True, True)
         return
     for name in (args.case or sorted(CASES, key=lambda n: CASES[n][0])):
-        run_one(name, args.cpd, args.force, False)
+        run_one(name, args.cpd, args.force, False, args.max_overlap)
 
 
 if __name__ == "__main__":

@@ -44,6 +44,20 @@ TEST(ContactLaw, FrictionOpposesSlipAndNeverReversesItInAStep) {
   EXPECT_NEAR(f.x(), std::min(0.5 * 10, 1e-3 / (wt * 1e-3)), 1e-12);
 }
 
+TEST(ContactLaw, DashpotPullsOnlyWhileTheSpringStillPushes) {
+  // the linear law's short tensile end (separating, spring nearly relaxed)
+  // stays; once the elastic force is spent (a spring stiffened in the
+  // contact) the dashpot may push but not pull
+  const ContactSide s1{true, 1.0, Mat3::Identity(), Vec3::Zero()};
+  const ContactSide wall;
+  const SpringDashpot law{1e4, 10};
+  const Vec3 n = Vec3::UnitZ();
+  const Vec3 separating(0, 0, 0.5), approaching(0, 0, -0.5);
+  EXPECT_NEAR(contactForce(1.0, n, separating, law, s1, wall, 0, 1e-3).z(), 1.0 - 5.0, 1e-12);
+  EXPECT_EQ(contactForce(0.0, n, separating, law, s1, wall, 0, 1e-3).z(), 0.0);
+  EXPECT_NEAR(contactForce(0.0, n, approaching, law, s1, wall, 0, 1e-3).z(), 5.0, 1e-12);
+}
+
 TEST(PlaneWall, SpheroidDistanceMatchesSampling) {
   const Quat q(Eigen::AngleAxis<Scalar>(0.7, Vec3(1, 2, 3).normalized()));
   const ellipsoids::Ellipsoid e(Vec3(3, 1, 0.5), Vec3(0.2, -0.1, 4), q);

@@ -197,6 +197,27 @@ TEST(DualNewton, ColdStartIsNearlyExactForIdenticalParallelBodies) {
   EXPECT_LT(2 * cold, centreLine) << "cold " << cold << ", from the centre line " << centreLine;
 }
 
+TEST(DualNewton, BracketNeverExceedsTheToleranceFarFromTheOrigin) {
+  // centres at 1e6: the rounding of the absolute closest points (~5e-9 here)
+  // is half the tolerance; the stopping test must leave room for it (it did
+  // not: brackets of eps_d plus a rounding made auto fall back to GJK)
+  const DualNewton dual;
+  std::mt19937_64 rng(53);
+  int converged = 0;
+  for (int k = 0; k < 400; ++k) {
+    const Vec3 base = Vec3::Constant(1e6);
+    const Ellipsoid e1 = Ellipsoid::spheroid(k % 2 ? 6.0 : 1.0 / 6, 1, base, randomRotation(rng));
+    const Ellipsoid e2 = Ellipsoid::spheroid(k % 2 ? 6.0 : 1.0 / 6, 1, base + 1.6 * randomUnit(rng),
+                                             randomRotation(rng));
+    if (JiaOverlapTest().test(e1, e2) != OverlapStatus::separated) continue;
+    const DistanceResult r = dual.distance(e1, e2, eps(1e-8));
+    ASSERT_EQ(r.status, DistanceStatus::converged) << k;
+    EXPECT_LE(r.bracketWidth(), 1e-8) << k;
+    ++converged;
+  }
+  ASSERT_GT(converged, 100);
+}
+
 TEST(DualNewton, ConcentricBodiesAreOverlappingWithTheThinnestDirection) {
   const DualNewton dual;
   const Ellipsoid e1(Vec3(3, 2, 1), Vec3::Zero(), Quat::Identity());

@@ -189,7 +189,14 @@ struct PairSetup {
     allow = 32 * kEps * (drNorm + size);
     roundingL = 4 * kEps * (drNorm + size);
     epsD = options.epsD;
-    epsStop = options.epsD - 2 * allow;
+    // the reported bracket is gap + 2 allow + the rounding of the absolute
+    // points (finish(): 4 eps (|p1|_1 + |p2|_1), |p1|_1 + |p2|_1 <= 2 |c1|_1 +
+    // |dr|_1 + sqrt(3) size) + the difference of L and v.n (roundingL): all of
+    // it inside epsD, so that the bracket never exceeds epsD by a rounding
+    const Scalar c1 = e1.centre().cwiseAbs().sum();
+    const Scalar dr1 = std::abs(dr.x) + std::abs(dr.y) + std::abs(dr.z);
+    epsStop = options.epsD - 2 * allow - 4 * kEps * (2 * c1 + dr1 + Scalar(1.7320508075688772) * size) -
+              roundingL;
     maxIterations = options.maxIterations > 0 ? options.maxIterations : DualNewton::kDefaultMaxIterations;
     spheres = e1.minSemiAxis() == e1.maxSemiAxis() && e2.minSemiAxis() == e2.maxSemiAxis();
   }
@@ -298,7 +305,7 @@ enum class GeneralStep { moved, converged, overlapping, failed };
  * of negative curvature, and a backtracking line search.
  */
 GeneralStep generalStep(const PairSetup& p, DualPoint*& cur, DualPoint*& trial) {
-  if (cur->L > 0 && cur->gap() + 2 * p.allow <= p.epsD) return GeneralStep::converged;
+  if (cur->L > 0 && cur->gap() <= p.epsStop) return GeneralStep::converged;
   const Vec3 curN = cur->n.eigen(), curV = cur->v.eigen();
   Vec3 t1, t2;
   tangentBasis(curN, t1, t2);
@@ -342,7 +349,7 @@ GeneralStep generalStep(const PairSetup& p, DualPoint*& cur, DualPoint*& trial) 
   if (stepNorm > 1) step /= stepNorm;
   const Scalar predicted = G.dot(step);  // first-order increase of L for the full step
   auto atMaximum = [&] {
-    return cur->L > 0 ? (cur->gap() + 2 * p.allow <= p.epsD ? GeneralStep::converged : GeneralStep::failed)
+    return cur->L > 0 ? (cur->gap() <= p.epsStop ? GeneralStep::converged : GeneralStep::failed)
                       : GeneralStep::overlapping;
   };
   if (!(predicted > 0)) return atMaximum();  // stationary: the maximum of L (to rounding)

@@ -3,10 +3,12 @@
 
     summarise.py [CASE]     (default: the current directory)
 
+The case's parameters (nu, the body, the fluid density, g) are read from its dictionaries.
 Settling speed and Reynolds number, the tilt of the symmetry axis from the vertical (90 deg =
 broadside-on) against time, the landing on the bottom (the first collision force), the solver's
 wall and CPU time. Needs Debian's python3-h5py and python3-numpy (/usr/bin/python3).
 """
+import math
 import os
 import re
 import sys
@@ -14,7 +16,24 @@ import sys
 import h5py
 import numpy as np
 
-D, NU = 6e-3, 1e-5  # the case's equal-volume diameter and viscosity
+
+
+def case_parameters(case):
+    """nu, the body's equal-volume diameter, density and the fluid density, g, from the case."""
+    def read(path, pattern):
+        with open(os.path.join(case, path)) as f:
+            m = re.search(pattern, f.read(), re.M)
+        if not m:
+            sys.exit(f"summarise.py: no match for '{pattern}' in {path}")
+        return m.groups()
+    nu = float(read("constant/transportProperties", r"^nu\s+([0-9.eE+-]+)\s*;")[0])
+    axes = [float(x) for x in read("constant/immersedBodiesProperties",
+                                   r"semiAxes\s*\(\s*(\S+)\s+(\S+)\s+(\S+)\s*\)")]
+    rho_p = float(read("constant/immersedBodiesProperties", r"^\s+density\s+([0-9.eE+-]+)\s*;")[0])
+    rho_f = float(read("constant/immersedBodiesProperties", r"^fluidDensity\s+([0-9.eE+-]+)\s*;")[0])
+    g = float(read("constant/g", r"^value\s*\(\s*\S+\s+\S+\s+(\S+)\s*\)")[0])
+    d = 2 * (axes[0] * axes[1] * axes[2]) ** (1 / 3)
+    return nu, d, rho_p, rho_f, abs(g)
 
 
 def tilt_degrees(q):
@@ -26,6 +45,8 @@ def tilt_degrees(q):
 
 def main():
     case = sys.argv[1] if len(sys.argv) > 1 else "."
+    nu, d, rho_p, rho_f, g = case_parameters(case)
+    galileo = math.sqrt(abs(rho_p / rho_f - 1) * g * d ** 3) / nu
     with h5py.File(os.path.join(case, "postProcessing/immersedBodies/bodies.h5"), "r",
                    locking=False) as f:
         t = f["time"][()]
@@ -38,14 +59,16 @@ def main():
     k = int(np.argmax(w))
     landed = np.flatnonzero(np.linalg.norm(fc, axis=1) > 0)
     broad = np.flatnonzero(tilt > 80)
-    rows = [("simulated time", f"{t[-1]:.3f} s ({len(t) - 1} steps)"),
+    rows = [("equal-volume diameter D, Galileo number sqrt((rho_p/rho_f - 1) g D^3)/nu",
+             f"{d * 1e3:.2f} mm, {galileo:.1f}"),
+            ("simulated time", f"{t[-1]:.3f} s ({len(t) - 1} steps)"),
             ("largest settling speed", f"{w[k] * 1e3:.1f} mm/s at t = {t[k]:.3f} s"),
-            ("Reynolds number U D/nu there", f"{w[k] * D / NU:.1f}"),
+            ("Reynolds number U D/nu there", f"{w[k] * d / nu:.1f}"),
             ("tilt from the vertical at the start", f"{tilt[0]:.1f} deg"),
             ("tilt at the largest speed", f"{tilt[k]:.1f} deg"),
             ("broadside-on (tilt > 80 deg) from", f"t = {t[broad[0]]:.3f} s" if len(broad) else "never"),
             ("lateral drift before landing",
-             f"{np.hypot(*(c[landed[0] if len(landed) else -1, :2] - c[0, :2])) / D:.2f} D"),
+             f"{np.hypot(*(c[landed[0] if len(landed) else -1, :2] - c[0, :2])) / d:.2f} D"),
             ("first contact with the bottom", f"t = {t[landed[0]]:.3f} s" if len(landed) else "none"),
             ("tilt at the end", f"{tilt[-1]:.1f} deg"),
             ("height of the centre at the end", f"{c[-1, 2] * 1e3:.2f} mm")]

@@ -203,26 +203,33 @@ struct PairSetup {
 };
 
 /**
- * Cold start: the normal, at the centre line, of an ellipsoid enclosing the
- * Minkowski sum E1 + (-E2) and touching it there. With s_m the support radii
- * along u = dr/|dr|, M = (s1 + s2)(P1/s1 + P2/s2) has support >= s1 + s2 in
- * every direction (Cauchy-Schwarz), with equality along u; the outward normal
- * of x^T M^-1 x = const at the point on the centre line is M^-1 dr. Near
- * touching (the queries that matter) the closest points lie close to where the
- * centre line crosses the sum, so this normal is a far better first n than u
- * itself for elongated bodies (about one Newton step fewer per packing query:
- * docs/benchmarks.md; for spheres it is the centre line, which is skipped).
- * Costs two square roots and a 3x3 adjugate; M^-1 dr is used unnormalised
- * (evaluateDirection normalises).
+ * Cold start: the normal at the point of an ellipsoid approximating the
+ * Minkowski sum K = E1 + (-E2) closest to dr. With s_m the support radii along
+ * u = dr/|dr|, M = (s1 + s2)(P1/s1 + P2/s2) has support >= s1 + s2 in every
+ * direction (Cauchy-Schwarz), with equality along u: the ellipsoid
+ * x^T M^-1 x = 1 encloses K and touches it on the centre line. The normal of
+ * its point closest to dr is (M + t I)^-1 dr, t = (distance) x (support along
+ * that normal); t = 0 is the normal where the centre line crosses it, exact for
+ * identical parallel bodies at touching, t -> infinity the centre line. We take
+ * t = 0.75 (|dr| - s1 - s2)(s1 + s2), at least 0: (M + t I) is then, up to a
+ * positive factor, P1 i1 + P2 i2 + sigma I with i_m = 1/(|dr| s_m) and sigma =
+ * 0.75 (1 - (s1 + s2)/|dr|). The factor was chosen among 0.5 to 1.25 by the
+ * mean Newton iterations on the packings of docs/benchmarks.md (the far pairs of
+ * elongated bodies gain most; the table there has the iterations with it and
+ * the run before it without the shift). Spheres keep the centre line
+ * (exact), which is skipped. Costs two square roots, a division and a 3x3
+ * adjugate; (M + t I)^-1 dr is used unnormalised (evaluateDirection normalises).
  */
 V3 centreLineNormal(const PairSetup& p) {
   const V3 y1 = p.P1 * p.dr, y2 = p.P2 * p.dr;
-  const Scalar i1 = 1 / std::sqrt(dot(p.dr, y1)), i2 = 1 / std::sqrt(dot(p.dr, y2));
-  // M up to a positive factor: P1/s1 + P2/s2 = |dr| (P1 i1 + P2 i2)
-  const Scalar a00 = p.P1.xx * i1 + p.P2.xx * i2, a01 = p.P1.xy * i1 + p.P2.xy * i2;
-  const Scalar a02 = p.P1.xz * i1 + p.P2.xz * i2, a11 = p.P1.yy * i1 + p.P2.yy * i2;
-  const Scalar a12 = p.P1.yz * i1 + p.P2.yz * i2, a22 = p.P1.zz * i1 + p.P2.zz * i2;
-  // adj(M) dr = det(M) M^-1 dr, det(M) > 0 (M is positive definite)
+  const Scalar q1 = dot(p.dr, y1), q2 = dot(p.dr, y2);  // (|dr| s_m)^2
+  const Scalar i1 = 1 / std::sqrt(q1), i2 = 1 / std::sqrt(q2);
+  const Scalar sigma = Scalar(0.75) * std::max(Scalar(0), 1 - (q1 * i1 + q2 * i2) / dot(p.dr, p.dr));
+  // (M + t I) up to a positive factor: P1 i1 + P2 i2 + sigma I
+  const Scalar a00 = p.P1.xx * i1 + p.P2.xx * i2 + sigma, a01 = p.P1.xy * i1 + p.P2.xy * i2;
+  const Scalar a02 = p.P1.xz * i1 + p.P2.xz * i2, a11 = p.P1.yy * i1 + p.P2.yy * i2 + sigma;
+  const Scalar a12 = p.P1.yz * i1 + p.P2.yz * i2, a22 = p.P1.zz * i1 + p.P2.zz * i2 + sigma;
+  // adj(A) dr = det(A) A^-1 dr, det(A) > 0 (A is positive definite)
   const Scalar c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
   const Scalar c11 = a00 * a22 - a02 * a02, c12 = a01 * a02 - a00 * a12, c22 = a00 * a11 - a01 * a01;
   const V3& d = p.dr;

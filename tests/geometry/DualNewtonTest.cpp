@@ -208,7 +208,7 @@ TEST(DualNewton, ColdStartOfDistantElongatedPairsLeansTowardsTheCentreLine) {
   std::uniform_real_distribution<Scalar> centreDistance(2, 8);
   for (Scalar ar : {1.0 / 6, 6.0}) {
     long iterations = 0, pairs = 0;
-    while (pairs < 400) {
+    for (int attempt = 0; attempt < 100000 && pairs < 400; ++attempt) {
       const Ellipsoid e1 = Ellipsoid::spheroid(ar, 1, Vec3::Zero(), randomRotation(rng));
       const Ellipsoid e2 = Ellipsoid::spheroid(ar, 1, centreDistance(rng) * randomUnit(rng), randomRotation(rng));
       const DistanceResult r = dual.distance(e1, e2, eps(1e-5));
@@ -217,6 +217,7 @@ TEST(DualNewton, ColdStartOfDistantElongatedPairsLeansTowardsTheCentreLine) {
       iterations += r.iterations;
       ++pairs;
     }
+    ASSERT_EQ(pairs, 400) << "Ar " << ar << ": too few pairs in range";
     EXPECT_LT(4 * iterations, 7 * pairs) << "Ar " << ar << ": " << iterations << " Newton steps for " << pairs
                                      << " pairs";
   }

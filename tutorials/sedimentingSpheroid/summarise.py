@@ -6,32 +6,37 @@
 The case's parameters (nu, the body, the fluid density, g) are read from its dictionaries.
 Settling speed and Reynolds number, the tilt of the symmetry axis from the vertical (90 deg =
 broadside-on) against time, the landing on the bottom (the first collision force), the solver's
-wall and CPU time. Needs Debian's python3-h5py and python3-numpy (/usr/bin/python3).
+wall and CPU time. Needs the project's environment (etc/bashrc: SPHEROIDFOAM_DIR, for the shared
+helpers in applications/utilities/plotBodies/caseSummary.py) and Debian's python3-h5py and
+python3-numpy (/usr/bin/python3).
 """
 import math
 import os
-import re
 import sys
 
 import h5py
 import numpy as np
 
+def _shared_helpers():
+    """applications/utilities/plotBodies of the project (SPHEROIDFOAM_DIR, set by etc/bashrc)."""
+    top = os.environ.get("SPHEROIDFOAM_DIR")
+    if not top:
+        sys.exit("summarise.py: SPHEROIDFOAM_DIR is not set; source the project's etc/bashrc")
+    sys.path.insert(0, os.path.join(top, "applications", "utilities", "plotBodies"))
+
+
+_shared_helpers()
+from caseSummary import read_entry, solver_time_row, write_results  # noqa: E402
 
 
 def case_parameters(case):
     """nu, the body's equal-volume diameter, density and the fluid density, g, from the case."""
-    def read(path, pattern):
-        with open(os.path.join(case, path)) as f:
-            m = re.search(pattern, f.read(), re.M)
-        if not m:
-            sys.exit(f"summarise.py: no match for '{pattern}' in {path}")
-        return m.groups()
-    nu = float(read("constant/transportProperties", r"^nu\s+([0-9.eE+-]+)\s*;")[0])
-    axes = [float(x) for x in read("constant/immersedBodiesProperties",
-                                   r"semiAxes\s*\(\s*(\S+)\s+(\S+)\s+(\S+)\s*\)")]
-    rho_p = float(read("constant/immersedBodiesProperties", r"^\s+density\s+([0-9.eE+-]+)\s*;")[0])
-    rho_f = float(read("constant/immersedBodiesProperties", r"^fluidDensity\s+([0-9.eE+-]+)\s*;")[0])
-    g = float(read("constant/g", r"^value\s*\(\s*\S+\s+\S+\s+(\S+)\s*\)")[0])
+    nu = float(read_entry(case, "constant/transportProperties", r"^nu\s+([0-9.eE+-]+)\s*;")[0])
+    axes = [float(x) for x in read_entry(case, "constant/immersedBodiesProperties",
+                                         r"semiAxes\s*\(\s*(\S+)\s+(\S+)\s+(\S+)\s*\)")]
+    rho_p = float(read_entry(case, "constant/immersedBodiesProperties", r"^\s+density\s+([0-9.eE+-]+)\s*;")[0])
+    rho_f = float(read_entry(case, "constant/immersedBodiesProperties", r"^fluidDensity\s+([0-9.eE+-]+)\s*;")[0])
+    g = float(read_entry(case, "constant/g", r"^value\s*\(\s*\S+\s+\S+\s+(\S+)\s*\)")[0])
     d = 2 * (axes[0] * axes[1] * axes[2]) ** (1 / 3)
     return nu, d, rho_p, rho_f, abs(g)
 
@@ -72,18 +77,10 @@ def main():
             ("first contact with the bottom", f"t = {t[landed[0]]:.3f} s" if len(landed) else "none"),
             ("tilt at the end", f"{tilt[-1]:.1f} deg"),
             ("height of the centre at the end", f"{c[-1, 2] * 1e3:.2f} mm")]
-    log = os.path.join(case, "log.immersedSpheroidFoam")
-    if os.path.exists(log):
-        times = re.findall(r"ExecutionTime = (\S+) s\s+ClockTime = (\S+) s", open(log).read())
-        nprocs = re.findall(r"nProcs\s*:\s*(\d+)", open(log).read())
-        if times:
-            rows.append(("solver time", f"{float(times[-1][1]):.0f} s wall, {float(times[-1][0]):.0f} s CPU, "
-                                        f"{nprocs[0] if nprocs else 1} rank(s)"))
-    lines = ["| quantity | value |", "|---|---|"] + [f"| {a} | {b} |" for a, b in rows]
-    with open(os.path.join(case, "results.md"), "w") as out:
-        out.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
-
+    row = solver_time_row(case)
+    if row:
+        rows.append(row)
+    write_results(case, rows)
 
 if __name__ == "__main__":
     main()

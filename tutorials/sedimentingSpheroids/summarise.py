@@ -16,21 +16,22 @@ of the solver. Needs Debian's python3-h5py, python3-numpy and python3-matplotlib
 import io
 import math
 import os
-import re
 import subprocess
 import sys
 
 import h5py
 import numpy as np
 
+def _shared_helpers():
+    """applications/utilities/plotBodies of the project (SPHEROIDFOAM_DIR, set by etc/bashrc)."""
+    top = os.environ.get("SPHEROIDFOAM_DIR")
+    if not top:
+        sys.exit("summarise.py: SPHEROIDFOAM_DIR is not set; source the project's etc/bashrc")
+    sys.path.insert(0, os.path.join(top, "applications", "utilities", "plotBodies"))
 
-def read_entry(case, path, pattern):
-    """The groups of the first match of pattern in a case file, or exit naming both."""
-    with open(os.path.join(case, path)) as f:
-        m = re.search(pattern, f.read(), re.M)
-    if not m:
-        sys.exit(f"summarise.py: no match for '{pattern}' in {path}")
-    return m.groups()
+
+_shared_helpers()
+from caseSummary import read_entry, solver_time_row, write_results  # noqa: E402
 
 
 def rotation(q):
@@ -119,18 +120,10 @@ def main():
         rows.append((f"{name}: first contact with the bottom", first_time(t, above[:, b] <= 0)))
     rows.append(("horizontal distance of the centres at the end",
                  f"{np.hypot(*(c[-1, 1, :2] - c[-1, 0, :2])) / D:.2f} D"))
-    log = os.path.join(case, "log.immersedSpheroidFoam")
-    if os.path.exists(log):
-        text = open(log).read()
-        times = re.findall(r"ExecutionTime = (\S+) s\s+ClockTime = (\S+) s", text)
-        nprocs = re.findall(r"nProcs\s*:\s*(\d+)", text)
-        if times:
-            rows.append(("solver time", f"{float(times[-1][1]):.0f} s wall, {float(times[-1][0]):.0f} s CPU, "
-                                        f"{nprocs[0] if nprocs else 1} rank(s)"))
-    lines = ["| quantity | value |", "|---|---|"] + [f"| {a} | {b} |" for a, b in rows]
-    with open(os.path.join(case, "results.md"), "w") as out:
-        out.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    row = solver_time_row(case)
+    if row:
+        rows.append(row)
+    write_results(case, rows)
     plot_pair(os.path.join(case, "pair.png"), t, gap / D, dz / D, fc, names)
 
 

@@ -296,8 +296,42 @@ TEST(RandomSequentialAddition, InvalidOptionsThrow) {
   o = options(1, 10, 0.1);
   o.maxAttemptsPerBody = 0;
   expectInvalid(o, "maxAttemptsPerBody", ">= 1");
+  o = options(1, 10, 0.1);
+  o.wallClearance = -0.1;
+  expectInvalid(o, "wallClearance", ">= 0");
+  o.walls = true;
+  o.wallClearance = 4.6;  // spheres: l/2 - a_max/D = 4.5
+  expectInvalid(o, "wallClearance", "< l/2 - a_max/D_eq = 4.5");
   EXPECT_NO_THROW(packing::validate(options(6, 6.61, 0.1)));
   EXPECT_NEAR(packing::minimumBoxLengthRelative(6), 2 * std::cbrt(36.0), 1e-5);
+}
+
+TEST(RandomSequentialAddition, WithWallsEveryBodyIsInsideTheBoxAndClearOfItsFaces) {
+  for (double ar : {2.0, 1.0 / 6, 6.0}) {
+    SCOPED_TRACE("Ar " + std::to_string(ar));
+    RsaOptions o = options(ar, 8, 0.2, 7);
+    o.walls = true;
+    o.wallClearance = 0.05;
+    o.equivalentDiameter = 4e-3;
+    packing::RsaStatistics stats;
+    const Packing p = packing::randomSequentialAddition(o, &stats);
+    ASSERT_EQ(p.bodies.size(), packing::rsaBodyCount(o));
+    EXPECT_GT(stats.wallRejections, 0u);
+    const double L = p.boxLength, gap = 0.05 * 4e-3;
+    double closest = L;
+    for (const Ellipsoid& b : p.bodies) {
+      for (int a = 0; a < 3; ++a) {
+        // the support along the axis from the body's own semi-axes and orientation
+        const Vec3 e = Vec3::Unit(a);
+        const Vec3 local = b.orientation().conjugate() * e;
+        const double h = std::sqrt((local.cwiseProduct(b.semiAxes())).squaredNorm());
+        closest = std::min({closest, b.centre()[a] - h, L - b.centre()[a] - h});
+      }
+    }
+    EXPECT_GE(closest, gap * (1 - 1e-9));
+    EXPECT_LT(closest, 0.3 * gap + gap);  // the walls are reached, not avoided by a margin
+    EXPECT_EQ(checkAllPairs(p).notSeparated, 0);
+  }
 }
 
 TEST(RandomSequentialAddition, ABodyThatCannotBePlacedEndsWithAClearError) {

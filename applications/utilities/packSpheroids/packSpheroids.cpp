@@ -39,6 +39,11 @@ Options:
   -seed N          seed of the random generator, 0 .. 2^64-1              (default 1)
   -D X             equivalent diameter D, > 0 (sets the length unit)      (default 1)
   -maxAttempts N   candidates tried for one body before giving up, >= 1   (default 1000000)
+  -walls           the cube has walls: every body lies entirely inside it (the
+                   initial state of a column or a closed box; still separated
+                   across the periodic images as well)                   (default off)
+  -wallClearance X with -walls: the smallest gap between a body and a face,
+                   over D, >= 0 and < l/2 - a_max/D                       (default 0)
   -o FILE          write the packing to FILE: .csv (text) or .h5/.hdf5 (HDF5);
                    may be given more than once (e.g. once of each)
   -quiet           no progress on stderr
@@ -125,6 +130,10 @@ int main(int argc, char** argv) {
       options.equivalentDiameter = number(a, value(), "a number > 0");
     } else if (a == "-maxAttempts") {
       options.maxAttemptsPerBody = integer<long>(a, value(), "an integer >= 1");
+    } else if (a == "-walls") {
+      options.walls = true;
+    } else if (a == "-wallClearance") {
+      options.wallClearance = number(a, value(), "a number >= 0 and < l/2 - a_max/D");
     } else if (a == "-o") {
       const std::string path = value();
       if (!knownExtension(path)) {
@@ -141,12 +150,15 @@ int main(int argc, char** argv) {
   static const std::map<std::string, std::string> flag = {
       {"aspectRatio", "-Ar"},          {"boxLengthRelative", "-l"},
       {"volumeFraction", "-alpha"},    {"equivalentDiameter", "-D"},
-      {"maxAttemptsPerBody", "-maxAttempts"}};
+      {"maxAttemptsPerBody", "-maxAttempts"}, {"wallClearance", "-wallClearance"}};
   try {
     packing::validate(options);
   } catch (const packing::InvalidRsaOption& e) {
     const auto f = flag.find(e.option());
     usageError("option " + (f == flag.end() ? e.option() : f->second) + ": " + e.what());
+  }
+  if (options.wallClearance > 0 && !options.walls) {
+    usageError("option -wallClearance: needs -walls");
   }
   if (outputs.empty() && options.progress) {
     std::cerr << "packSpheroids: no -o given: the packing is generated but not written\n";
@@ -175,7 +187,8 @@ int main(int argc, char** argv) {
   std::cout << std::setprecision(6);
   std::cout << "packSpheroids: Ar " << options.aspectRatio << ", l " << options.boxLengthRelative
             << ", D " << options.equivalentDiameter << ", seed " << options.seed << "\n"
-            << "  box length L      " << result.boxLength << "\n"
+            << "  box length L      " << result.boxLength
+            << (options.walls ? " (walls: every body inside the box)" : " (periodic)") << "\n"
             << "  semi-axes         a " << s.x() << ", b = c " << s.y() << "\n"
             << "  bodies N          " << result.bodies.size() << "\n"
             << "  volume fraction   " << result.volumeFraction << " (requested "
@@ -186,6 +199,7 @@ int main(int argc, char** argv) {
             << "  Jia tests         " << stats.jiaTests << "\n"
             << "  blocked voxels    " << stats.deadVoxels << " (" << stats.voxelRejections
             << " candidates rejected there at once)\n"
+            << (options.walls ? "  wall rejections   " + std::to_string(stats.wallRejections) + "\n" : "")
             << std::fixed << std::setprecision(3) << "  wall time         " << stats.seconds
             << " s placing, " << total << " s in all\n";
   for (const std::string& path : outputs) std::cout << "  wrote             " << path << "\n";

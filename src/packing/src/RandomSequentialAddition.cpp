@@ -107,6 +107,17 @@ void validate(const RsaOptions& o) {
                            "boxLengthRelative " + fmt(o.boxLengthRelative) + " with volumeFraction " +
                                fmt(o.volumeFraction) + " gives more than 1e8 bodies; lower either");
   }
+  if (!(o.wallClearance >= 0) || !std::isfinite(o.wallClearance)) {
+    throw InvalidRsaOption("wallClearance",
+                           "wallClearance must be finite and >= 0, got " + fmt(o.wallClearance));
+  }
+  if (o.walls && !(2 * (maxSemiAxisRelative(o.aspectRatio) / 2 + o.wallClearance) < o.boxLengthRelative)) {
+    throw InvalidRsaOption("wallClearance",
+                           "wallClearance " + fmt(o.wallClearance) + " leaves no room for a body between the walls"
+                           " of a box of boxLengthRelative " + fmt(o.boxLengthRelative) +
+                           ": it must be < l/2 - a_max/D_eq = " +
+                           fmt(o.boxLengthRelative / 2 - maxSemiAxisRelative(o.aspectRatio) / 2));
+  }
   if (o.maxAttemptsPerBody < 1) {
     throw InvalidRsaOption("maxAttemptsPerBody", "maxAttemptsPerBody must be >= 1, got " +
                                                      std::to_string(o.maxAttemptsPerBody));
@@ -188,6 +199,7 @@ class Placement {
     n_ = rsaBodyCount(o);
     D_ = o.equivalentDiameter;
     L_ = o.boxLengthRelative * D_;
+    wallClearance_ = o.wallClearance * D_;
     const Ellipsoid reference =
         Ellipsoid::spheroid(o.aspectRatio, D_, Vec3::Zero(), Quat::Identity());
     semiAxes_ = reference.semiAxes();  // exactly as Ellipsoid::spheroid computes them
@@ -465,6 +477,17 @@ class Placement {
     const ellipsoids::Mat3 R = q.toRotationMatrix();
     Shape shape{Sym(R * inflatedInverse2_.asDiagonal() * R.transpose()),
                 Sym(R * semiAxes2_.asDiagonal() * R.transpose())};
+    if (o_.walls) {
+      // the support along each axis, sqrt(P_dd), within the clearance of the faces
+      const double reach[3] = {shape.shape.a[0], shape.shape.a[3], shape.shape.a[5]};
+      for (int a = 0; a < 3; ++a) {
+        const double h = std::sqrt(reach[a]) + wallClearance_;
+        if (!(c[a] - h > 0) || !(c[a] + h < L_)) {
+          ++stats_.wallRejections;
+          return false;
+        }
+      }
+    }
     for (const Near& nb : near_) {
       if (nb.d.squaredNorm() <= inflatedReach2_ && shape.inflated.form(nb.d) <= 1 - kMargin) return false;
     }
@@ -500,7 +523,7 @@ class Placement {
 
   const RsaOptions& o_;
   std::size_t n_ = 0;
-  double D_ = 1, L_ = 1;
+  double D_ = 1, L_ = 1, wallClearance_ = 0;
   Vec3 semiAxes_, semiAxes2_, inflatedInverse2_;
   double aMin_ = 0, cutoff_ = 0, cutoff2_ = 0, inner2_ = 0, inflatedReach2_ = 0;
   bool useCells_ = false;

@@ -25,6 +25,11 @@
  * Every candidate drawn counts as an attempt (also those rejected at once in a
  * blocked voxel); a body that needs more than maxAttemptsPerBody throws.
  *
+ * With walls, a candidate must also lie inside the cube, its support along each
+ * axis (sqrt(e^T U diag(a^2) U^T e)) at least wallClearance D_eq from the faces;
+ * the draws are the same, so the packing is the periodic one's candidate stream
+ * filtered by the walls.
+ *
  * Cost: a cell list (cells >= 2 a_max (1 + 1e-6)), cheap exact filters
  * before the Jia test (bounding and inscribed spheres, the body inflated by
  * a_min, a separating plane normal to the centre line) and a bit per voxel of
@@ -56,6 +61,12 @@ struct RsaOptions {
   double equivalentDiameter = 1;   ///< > 0 (finite)
   long maxAttemptsPerBody = 1000000;  ///< >= 1
   bool progress = false;           ///< bodies placed / total on stderr
+  /// walls: every body lies entirely inside the cube, clear of its faces by
+  /// wallClearance D_eq (a candidate reaching further is drawn again), e.g. for a
+  /// column with walls; the packing is still separated across the periodic
+  /// images too, so it stays a valid periodic packing
+  bool walls = false;
+  double wallClearance = 0;        ///< >= 0, relative to D_eq; with walls only
 };
 
 /// What a run did (the optional output of randomSequentialAddition).
@@ -66,6 +77,7 @@ struct RsaStatistics {
   std::uint64_t jiaTests = 0;          ///< pairs decided by the Jia et al. test (not by a filter)
   std::uint64_t voxelRejections = 0;   ///< candidates rejected at once: in a voxel known to be blocked
   std::uint64_t deadVoxels = 0;        ///< voxels found blocked whatever the orientation
+  std::uint64_t wallRejections = 0;    ///< candidates reaching closer to a wall than allowed (walls)
   double seconds = 0;                  ///< wall time of the placement
 };
 
@@ -75,7 +87,7 @@ class InvalidRsaOption : public std::invalid_argument {
   InvalidRsaOption(std::string option, const std::string& message)
       : std::invalid_argument(message), option_(std::move(option)) {}
   /// the RsaOptions member: "aspectRatio", "boxLengthRelative", "volumeFraction",
-  /// "equivalentDiameter" or "maxAttemptsPerBody"
+  /// "equivalentDiameter", "maxAttemptsPerBody" or "wallClearance"
   const std::string& option() const { return option_; }
 
  private:

@@ -5,6 +5,11 @@
                                       terminal velocity u_t = U_IN - v_z, averaged over the
                                       second half of the run, written to CASE/terminalVelocity
     summarise.py bed CASE             the bed: fluidisedBed.png, expansion.png, results.md
+    summarise.py speeds CASE [UNTIL [ABOVE]]
+                                      rows of the time series (up to t = UNTIL s) with a body
+                                      faster than ABOVE m/s (default 0.15, about 2 u_t), and
+                                      the largest body speed: the oscillation of bodies in
+                                      near-contact (README, "Time step")
 
 The bed height is H = 2 <z> (z of the body centres above the inlet; a uniform bed of height H
 has <z> = H/2), the voidage eps = 1 - N V_p / (A H) with A the column's cross-section. Per
@@ -16,7 +21,7 @@ measured exponent is the least-squares slope of log(U/u_t) against log(eps) thro
 origin (u_t measured), and with a free intercept (u_i/u_t).
 
 Everything is read from the case (nu, the bodies, the inflow stages in constant/fluidisation,
-the column from system/blockMeshDict). Needs SPHEROIDFOAM_DIR (etc/bashrc) and Debian's
+the column from system/blockMeshDict). Needs the project's environment (etc/bashrc) and Debian's
 python3-h5py, python3-numpy and python3-matplotlib (/usr/bin/python3).
 """
 import math
@@ -27,16 +32,10 @@ import h5py
 import numpy as np
 
 
-def _shared_helpers():
-    """applications/utilities/plotBodies of the project (SPHEROIDFOAM_DIR, set by etc/bashrc)."""
-    top = os.environ.get("SPHEROIDFOAM_DIR")
-    if not top:
-        sys.exit("summarise.py: SPHEROIDFOAM_DIR is not set; source the project's etc/bashrc")
-    sys.path.insert(0, os.path.join(top, "applications", "utilities", "plotBodies"))
-
-
-_shared_helpers()
-from caseSummary import read_entry, solver_time_row, write_results  # noqa: E402
+try:
+    from caseSummary import read_entry, solver_time_row, write_results
+except ImportError:  # applications/utilities/plotBodies is on PYTHONPATH through etc/bashrc
+    sys.exit("summarise.py: caseSummary not found; source the project's etc/bashrc")
 
 NUMBER = r"([-+0-9.eE]+)"
 G = 9.81
@@ -77,7 +76,7 @@ def terminal(case, inflow):
         sys.exit(f"summarise.py: the body came within 1.5 D of the inlet or the outlet (z "
                  f"{z.min() / D:.2f} to {z.max() / D:.2f} D in a column of {height / D:.1f} D): "
                  f"set terminalVelocityGuess in constant/fluidisation nearer u_t "
-                 f"(U_in {inflow} m/s, body velocity {c[-1, 0, 2]:.3g})")
+                 f"(U_in {inflow} m/s, body velocity v_z {v[-1, 0, 2]:.3g} m/s)")
     vz = v[late, 0, 2]
     ut = inflow - vz.mean()
     spread = vz.max() - vz.min()
@@ -88,6 +87,19 @@ def terminal(case, inflow):
     print(f"terminal velocity u_t = {ut:.5g} m/s = U_in {inflow:g} - v_z {vz.mean():.4g} m/s "
           f"(v_z varied by {spread:.2g} m/s over t {t[-1] / 2:.3g}-{t[-1]:.3g} s); "
           f"D {D * 1e3:.3g} mm")
+
+
+def fast_rows(t, v, until=math.inf, above=0.15):
+    """(rows up to t = until, of which rows with a body faster than `above`, largest speed)."""
+    speed = np.linalg.norm(v[t <= until], axis=-1)
+    return len(speed), int(np.sum(speed.max(axis=1) > above)), float(speed.max())
+
+
+def speeds(case, until, above):
+    t, _, v, _, _ = read_bodies(case)
+    rows, fast, top = fast_rows(t, v, until, above)
+    print(f"{case}: up to t = {min(until, t[-1]):.3g} s, {fast} of {rows} rows with a body faster "
+          f"than {above:g} m/s; largest body speed {top:.3g} m/s")
 
 
 def stage_list(case):
@@ -106,7 +118,7 @@ def khan_richardson(archimedes):
 
 
 def bed(case):
-    t, c, _, axes, density = read_bodies(case)
+    t, c, v, axes, density = read_bodies(case)
     wx, wy, height = column(case)
     nu = float(read_entry(case, "constant/transportProperties", r"^nu\s+" + NUMBER)[0])
     rho_f = float(read_entry(case, "constant/immersedBodiesProperties",
@@ -155,6 +167,9 @@ def bed(case):
         rows.append((f"stage U/u_t = {s:g}: voidage (mean +- sd), bed height",
                      f"{e:.4f} +- {sd:.4f} (RZ Rowe {s ** (1 / n_rowe):.4f}, KR "
                      f"{s ** (1 / n_kr):.4f}), H = {h / D:.2f} D"))
+    rows_all, fast, top = fast_rows(t, v)
+    rows.append(("rows with a body faster than 0.15 m/s (about 2 u_t); largest body speed",
+                 f"{fast} of {rows_all}; {top * 1e3:.0f} mm/s"))
     for name, sub in (("single body", "terminalVelocity"), ("bed", ".")):
         row = solver_time_row(os.path.join(case, sub))
         if row:
@@ -215,8 +230,12 @@ def main(argv):
         terminal(argv[2], float(argv[3]))
     elif len(argv) == 3 and argv[1] == "bed":
         bed(argv[2])
+    elif 3 <= len(argv) <= 5 and argv[1] == "speeds":
+        speeds(argv[2], float(argv[3]) if len(argv) > 3 else math.inf,
+               float(argv[4]) if len(argv) > 4 else 0.15)
     else:
-        sys.exit("usage: summarise.py terminal CASE U_IN | summarise.py bed CASE")
+        sys.exit("usage: summarise.py terminal CASE U_IN | summarise.py bed CASE | "
+                 "summarise.py speeds CASE [UNTIL [ABOVE]]")
 
 
 if __name__ == "__main__":

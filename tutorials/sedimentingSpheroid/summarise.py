@@ -6,7 +6,7 @@
 The case's parameters (nu, the body, the fluid density, g) are read from its dictionaries.
 Settling speed and Reynolds number, the tilt of the symmetry axis from the vertical (90 deg =
 broadside-on) against time, the landing on the bottom (the first collision force), the solver's
-wall and CPU time. Needs the project's environment (etc/bashrc: SPHEROIDFOAM_DIR, for the shared
+wall and CPU time. Needs the project's environment (etc/bashrc, for the shared
 helpers in applications/utilities/plotBodies/caseSummary.py) and Debian's python3-h5py and
 python3-numpy (/usr/bin/python3).
 """
@@ -17,16 +17,10 @@ import sys
 import h5py
 import numpy as np
 
-def _shared_helpers():
-    """applications/utilities/plotBodies of the project (SPHEROIDFOAM_DIR, set by etc/bashrc)."""
-    top = os.environ.get("SPHEROIDFOAM_DIR")
-    if not top:
-        sys.exit("summarise.py: SPHEROIDFOAM_DIR is not set; source the project's etc/bashrc")
-    sys.path.insert(0, os.path.join(top, "applications", "utilities", "plotBodies"))
-
-
-_shared_helpers()
-from caseSummary import read_entry, solver_time_row, write_results  # noqa: E402
+try:
+    from caseSummary import read_entry, solver_time_row, write_results
+except ImportError:  # applications/utilities/plotBodies is on PYTHONPATH through etc/bashrc
+    sys.exit("summarise.py: caseSummary not found; source the project's etc/bashrc")
 
 
 def case_parameters(case):

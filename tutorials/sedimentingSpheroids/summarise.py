@@ -22,16 +22,10 @@ import sys
 import h5py
 import numpy as np
 
-def _shared_helpers():
-    """applications/utilities/plotBodies of the project (SPHEROIDFOAM_DIR, set by etc/bashrc)."""
-    top = os.environ.get("SPHEROIDFOAM_DIR")
-    if not top:
-        sys.exit("summarise.py: SPHEROIDFOAM_DIR is not set; source the project's etc/bashrc")
-    sys.path.insert(0, os.path.join(top, "applications", "utilities", "plotBodies"))
-
-
-_shared_helpers()
-from caseSummary import read_entry, solver_time_row, write_results  # noqa: E402
+try:
+    from caseSummary import read_entry, solver_time_row, write_results
+except ImportError:  # applications/utilities/plotBodies is on PYTHONPATH through etc/bashrc
+    sys.exit("summarise.py: caseSummary not found; source the project's etc/bashrc")
 
 
 def rotation(q):

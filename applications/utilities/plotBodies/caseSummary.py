@@ -1,8 +1,8 @@
 """Helpers shared by the tutorials' summarise.py scripts: read a case entry, the solver's time
 from its log, and write the results.md table.
 
-Import with SPHEROIDFOAM_DIR/applications/utilities/plotBodies on sys.path (caseSummaryPath()
-of a summarise.py does that). Standard library only.
+etc/bashrc puts applications/utilities/plotBodies on PYTHONPATH, so `from caseSummary import ...`
+works in the project's environment. Standard library only.
 """
 import os
 import re

@@ -271,9 +271,19 @@ TEST(DryCollision, DeepOverlapAtStartAndTinyGapsWithLubricationStayFinite) {
     for (std::size_t i = 0; i < F.size(); ++i) {
       EXPECT_TRUE(F[i].allFinite() && T[i].allFinite()) << gap;
     }
+    std::vector<Vec3> FL, TL, v, w;
+    for (const CollisionBody& x : cb) {
+      v.push_back(x.velocity);
+      w.push_back(x.angularVelocity);
+    }
+    ASSERT_NO_THROW(model.dampingForces(cb, v, w, {}, {}, 1e-6, FL, TL)) << gap;
+    for (std::size_t i = 0; i < FL.size(); ++i) {
+      EXPECT_TRUE(FL[i].allFinite() && TL[i].allFinite()) << gap;
+    }
     std::vector<CollisionBody> alone{a.collisionBody()};
     model.forces(alone, 1e-4, 1e-6, F, T);
-    EXPECT_GT(F[0].z(), 0) << "the floor pushes the approaching sphere up at gap " << gap;
+    model.dampingForces(alone, {alone[0].velocity}, {alone[0].angularVelocity}, {}, {}, 1e-6, FL, TL);
+    EXPECT_GT(F[0].z() + FL[0].z(), 0) << "the floor pushes the approaching sphere up at gap " << gap;
   }
   EXPECT_GT(model.statistics().lubricated, 0);
 }

@@ -101,6 +101,7 @@ std::vector<PairRecord> CollisionModel::history() const {
     r.springForce = c.springForce;
     r.stiffness = c.stiffness;
     r.overlap = c.overlap;
+    r.age = c.age;
   }
   std::vector<PairRecord> out;
   out.reserve(merged.size());
@@ -123,12 +124,13 @@ void CollisionModel::setHistory(const std::vector<PairRecord>& records) {
     require(!r.warm || (r.direction.allFinite() && r.direction.norm() > 0),
             "pair history " + pair + ": the warm-start direction must be finite and non-zero");
     require(std::isfinite(r.springForce) && r.springForce >= 0 && std::isfinite(r.stiffness) &&
-                r.stiffness >= 0 && std::isfinite(r.overlap) && r.overlap >= 0,
-            "pair history " + pair + ": spring force, stiffness and overlap must be finite and >= 0");
+                r.stiffness >= 0 && std::isfinite(r.overlap) && r.overlap >= 0 &&
+                std::isfinite(r.age) && r.age >= 0,
+            "pair history " + pair + ": spring force, stiffness, overlap and age must be finite and >= 0");
     if (r.warm) direction_[key(r.first, r.second)] = r.direction;
     if (r.contactTime > 0) {
       contact_[key(r.first, r.second)] =
-          ContactState{r.contactTime, r.springForce, r.stiffness, r.overlap};
+          ContactState{r.contactTime, r.springForce, r.stiffness, r.overlap, r.age};
     }
   }
 }
@@ -166,12 +168,16 @@ int CollisionModel::subSteps(const std::vector<CollisionBody>& bodies, Scalar dt
 }
 
 void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar contactTime,
-                            Scalar subDt, std::vector<Vec3>& force, std::vector<Vec3>& torque) {
+                            Scalar subDt, std::vector<Vec3>& force, std::vector<Vec3>& torque,
+                            bool recordDamping) {
   const int n = static_cast<int>(bodies.size());
   force.assign(n, Vec3::Zero());
   torque.assign(n, Vec3::Zero());
+  recordDamping_ = recordDamping;
+  if (recordDamping) damped_.clear();
   if (settings_.mode == CollisionMode::none) return;
   const bool lubrication = settings_.mode == CollisionMode::lubricationContact;
+  const bool films = filmsOn();
 
   // reach of each body: half the largest activation gap it can take part in
   centres_.resize(n);
@@ -182,6 +188,7 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
     reach_[i] = lubrication ? 0.5 * settings_.lubrication.pairActivation *
                                   e.maxOfMaxCurvatureRadius()
                             : 0;
+    if (films) reach_[i] = std::max(reach_[i], 0.5 * bodies[i].filmGap);
     centres_[i] = e.centre();
     radii_[i] = e.maxSemiAxis() + reach_[i];
   }
@@ -245,8 +252,9 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
     if (!bodies[i].movable) continue;
     for (int w = 0; w < static_cast<int>(walls_.size()); ++w) {
       const WallDistance d = wallDistance(bodies[i].shape, walls_[w]);
-      if (d.distance > settings_.lubrication.wallActivation * bodies[i].shape.maxOfMaxCurvatureRadius() *
-                           (lubrication ? 1 : 0)) {
+      const Scalar lubricationReach =
+          lubrication ? settings_.lubrication.wallActivation * bodies[i].shape.maxOfMaxCurvatureRadius() : 0;
+      if (d.distance > std::max(lubricationReach, films ? bodies[i].filmGap : Scalar(0))) {
         continue;
       }
       interact(bodies, i, -1 - w, d.distance, -walls_[w].normal, d.bodyPoint, d.wallPoint,
@@ -321,8 +329,28 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
         c.contactTime = shorter;
         ++statistics_.stiffened;
       }
+      // a sustained load (gravity, the flow, bodies above): a spring made for
+      // an impact's contact time can be far too soft to carry it (the static
+      // overlap of a body of weight W is W/k = g' T_c^2/(pi^2 + ln^2 e): half a
+      // semi-axis for a 4 mm body and T_c = 40 ms). Still pressed in after half
+      // the contact time (an impact's compression is over by then) and past
+      // half the cap, the spring is stiffened so that its present elastic
+      // force is held within the overlap still allowed (a quarter of the cap
+      // at least): k >= F / left, a barrier at the cap that only the load sets
+      if (un < 0 && overlap > Scalar(0.5) * cap && c.age > Scalar(0.5) * c.contactTime) {
+        const Scalar held = std::max(cap - overlap, Scalar(0.25) * cap);
+        const Scalar needed = c.springForce / held;
+        if (needed > law.stiffness) {
+          const Scalar ratio = std::sqrt(needed / law.stiffness);
+          law.stiffness = needed;
+          law.damping *= ratio;
+          c.contactTime /= ratio;
+          ++statistics_.stiffened;
+        }
+      }
       c.stiffness = law.stiffness;
       c.overlap = overlap;
+      if (recordDamping_) c.age += subDt;  // once per sub-step (its first call)
       f2 += contactForce(c.springForce, n, relative, law, s1, s2, settings_.contact.friction, subDt);
     }
     nextContact_[k] = c;
@@ -330,24 +358,39 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
     statistics_.maxOverlapRatio = std::max(statistics_.maxOverlapRatio, overlap / aMin);
   }
 
-  // lubrication; the curvature radii only when the gap is below the largest
-  // activation gap the radii allow (Gaussian radius <= largest curvature radius)
+  // lubrication (step 5) and the film correction (step 7), both applied
+  // implicitly by dampingForces(); the curvature radii only when the gap is
+  // below the largest activation gap the radii allow (Gaussian radius <=
+  // largest curvature radius) or below the film gap
   const Scalar rBound = b1.shape.maxOfMaxCurvatureRadius() +
                         (wall ? 0 : bodies[j].shape.maxOfMaxCurvatureRadius());
   const Scalar reachBound = wall ? settings_.lubrication.wallActivation * rBound
                                  : 0.5 * settings_.lubrication.pairActivation * rBound;
-  if (settings_.mode == CollisionMode::lubricationContact && settings_.viscosity > 0 &&
-      gap >= 0 && gap < reachBound) {
+  const bool lubricating = settings_.mode == CollisionMode::lubricationContact &&
+                           settings_.viscosity > 0 && gap >= 0 && gap < reachBound;
+  const Scalar filmGap = filmsOn() ? std::max(b1.filmGap, wall ? Scalar(0) : bodies[j].filmGap) : 0;
+  const bool film = filmGap > 0 && gap < filmGap;
+  if (lubricating || film) {
     const Scalar r1 = b1.shape.curvatureRadii(p1).gaussian;
     const Scalar r2 = wall ? kInf : bodies[j].shape.curvatureRadii(p2).gaussian;
-    const Scalar c = wall ? wallLubricationCoefficient(gap, r1, settings_.viscosity,
-                                                       settings_.lubrication)
-                          : pairLubricationCoefficient(gap, r1, r2, settings_.viscosity,
-                                                       settings_.lubrication);
-    if (c > 0) {
-      f2 -= c * un * n;
-      ++statistics_.lubricated;
+    DampedPair pair;
+    pair.first = i;
+    pair.second = j;
+    pair.normal = n;
+    pair.arm1 = s1.arm;
+    pair.arm2 = s2.arm;
+    if (lubricating) {
+      pair.lubrication = wall ? wallLubricationCoefficient(gap, r1, settings_.viscosity, settings_.lubrication)
+                              : pairLubricationCoefficient(gap, r1, r2, settings_.viscosity,
+                                                           settings_.lubrication);
+      if (pair.lubrication > 0) ++statistics_.lubricated;
     }
+    if (film) {
+      const Scalar r = wall ? r1 : r1 * r2 / (r1 + r2);
+      pair.film = 6 * kPi * settings_.viscosity * r * r / std::max(gap, Scalar(0.25) * filmGap);
+      ++statistics_.filmPairs;
+    }
+    if (recordDamping_ && (pair.lubrication > 0 || pair.film > 0)) damped_.push_back(pair);
   }
 
   if (f2.squaredNorm() == 0) return;
@@ -356,6 +399,117 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
   if (!wall) {
     force[j] += f2;
     torque[j] += s2.arm.cross(f2);
+  }
+}
+
+void CollisionModel::dampingForces(const std::vector<CollisionBody>& bodies,
+                                   const std::vector<Vec3>& endVelocity,
+                                   const std::vector<Vec3>& endAngularVelocity,
+                                   const std::vector<Vec3>& referenceVelocity,
+                                   const std::vector<Vec3>& referenceAngularVelocity, Scalar subDt,
+                                   std::vector<Vec3>& force, std::vector<Vec3>& torque) {
+  const std::size_t n = bodies.size();
+  require(endVelocity.size() == n && endAngularVelocity.size() == n,
+          "dampingForces: " + std::to_string(n) + " bodies but " + std::to_string(endVelocity.size()) +
+              " velocities and " + std::to_string(endAngularVelocity.size()) + " angular velocities");
+  require(std::isfinite(subDt) && subDt > 0,
+          "dampingForces: sub-step " + std::to_string(subDt) + " must be > 0");
+  force.assign(n, Vec3::Zero());
+  torque.assign(n, Vec3::Zero());
+  if (damped_.empty()) return;
+  bool films = false;
+  for (const DampedPair& p : damped_) {
+    require(p.first >= 0 && std::size_t(p.first) < n &&
+                (p.second < 0 ? -1 - p.second < static_cast<int>(walls_.size())
+                              : std::size_t(p.second) < n),
+            "dampingForces: the recorded pairs are of other bodies (call forces() first)");
+    films = films || p.film > 0;
+  }
+  require(!films || (referenceVelocity.size() == n && referenceAngularVelocity.size() == n),
+          "dampingForces: the film correction needs the reference velocities of all " +
+              std::to_string(n) + " bodies");
+  ++statistics_.dampingSolves;
+
+  std::vector<Vec3> v = endVelocity, w = endAngularVelocity;
+  const std::size_t m = damped_.size();
+  impulse_.assign(m, 0);
+  auto side = [&](int b, const Vec3& arm) {
+    ContactSide s;
+    if (b >= 0 && bodies[b].movable) {
+      s.movable = true;
+      s.inverseMass = 1 / bodies[b].mass;
+      s.inverseInertia = bodies[b].inverseInertia;
+    }
+    s.arm = arm;
+    return s;
+  };
+  // relative normal velocity of a pair (second relative to first) at the
+  // velocities vv, ww
+  auto normalSpeed = [](const DampedPair& p, const std::vector<Vec3>& vv, const std::vector<Vec3>& ww) {
+    Vec3 rel = -(vv[p.first] + ww[p.first].cross(p.arm1));
+    if (p.second >= 0) rel += vv[p.second] + ww[p.second].cross(p.arm2);
+    return rel.dot(p.normal);
+  };
+  // per pair: the inverse effective mass along its normal and the reference speed
+  std::vector<Scalar>& wk = pairInverseMass_;
+  std::vector<Scalar>& uRef = pairReferenceSpeed_;
+  wk.resize(m);
+  uRef.assign(m, 0);
+  Scalar scale = 0;
+  for (std::size_t k = 0; k < m; ++k) {
+    const DampedPair& p = damped_[k];
+    wk[k] = inverseEffectiveMass(side(p.first, p.arm1), side(p.second, p.arm2), p.normal);
+    if (p.film > 0) uRef[k] = normalSpeed(p, referenceVelocity, referenceAngularVelocity);
+    scale = std::max({scale, std::abs(normalSpeed(p, v, w)), std::abs(uRef[k])});
+  }
+  if (scale == 0) return;  // no relative normal motion: no force
+
+  int sweeps = 0;
+  bool converged = false;
+  while (sweeps < kMaxDampingSweeps && !converged) {
+    ++sweeps;
+    Scalar largestChange = 0;
+    for (std::size_t k = 0; k < m; ++k) {
+      if (!(wk[k] > 0)) continue;
+      const DampedPair& p = damped_[k];
+      // the impulse lambda on the second body along n with
+      // lambda = -subDt [(c + D) u_n(end) - D u_ref], the other pairs'
+      // impulses held: u_n moves by wk per unit impulse
+      const Scalar h = subDt * (p.lubrication + p.film);
+      const Scalar un = normalSpeed(p, v, w);
+      const Scalar target = -(h * (un - wk[k] * impulse_[k]) - subDt * p.film * uRef[k]) / (1 + h * wk[k]);
+      const Scalar change = target - impulse_[k];
+      impulse_[k] = target;
+      const Vec3 j2 = change * p.normal;  // on the second body; -j2 on the first
+      if (bodies[p.first].movable) {
+        v[p.first] -= j2 / bodies[p.first].mass;
+        w[p.first] -= bodies[p.first].inverseInertia * p.arm1.cross(j2);
+      }
+      if (p.second >= 0 && bodies[p.second].movable) {
+        v[p.second] += j2 / bodies[p.second].mass;
+        w[p.second] += bodies[p.second].inverseInertia * p.arm2.cross(j2);
+      }
+      largestChange = std::max(largestChange, std::abs(change) * wk[k]);
+    }
+    converged = largestChange <= kDampingTolerance * scale;
+  }
+  statistics_.dampingSweeps += sweeps;
+  if (!converged) ++statistics_.dampingNotConverged;
+
+  for (std::size_t k = 0; k < m; ++k) {
+    const DampedPair& p = damped_[k];
+    const Vec3 f2 = (impulse_[k] / subDt) * p.normal;
+    force[p.first] -= f2;
+    torque[p.first] -= p.arm1.cross(f2);
+    if (p.second >= 0) {
+      force[p.second] += f2;
+      torque[p.second] += p.arm2.cross(f2);
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!force[i].allFinite() || !torque[i].allFinite()) {
+      throw std::runtime_error("collision: non-finite damping force on body " + std::to_string(i));
+    }
   }
 }
 

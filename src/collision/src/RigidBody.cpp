@@ -64,17 +64,36 @@ void collisionSubStep(std::vector<RigidBody>& bodies, CollisionModel& model, Sca
   cb.reserve(bodies.size());
   for (const RigidBody& b : bodies) cb.push_back(b.collisionBody());
   std::vector<Vec3> f0, t0, f1, t1;
-  model.forces(cb, contactTime, dt, f0, t0);
+  model.forces(cb, contactTime, dt, f0, t0);  // records the damped pairs
   std::vector<RigidBody> predicted = bodies;
-  cb.clear();
+  std::vector<CollisionBody> cbPredicted;
+  cbPredicted.reserve(bodies.size());
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     predicted[i].advance(f0[i], t0[i], dt);
-    cb.push_back(predicted[i].collisionBody());
+    cbPredicted.push_back(predicted[i].collisionBody());
   }
-  model.forces(cb, contactTime, dt, f1, t1);
+  model.forces(cbPredicted, contactTime, dt, f1, t1, false);
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    bodies[i].advance(0.5 * (f0[i] + f1[i]), 0.5 * (t0[i] + t1[i]), dt);
+    f0[i] = 0.5 * (f0[i] + f1[i]);
+    t0[i] = 0.5 * (t0[i] + t1[i]);
   }
+  if (!model.dampedPairs().empty()) {
+    // the end velocities under the contact forces, then the lubrication
+    // forces implicit in them (in vacuum there is no flow: no film pairs)
+    std::vector<Vec3> vEnd(bodies.size()), wEnd(bodies.size());
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      RigidBody trial = bodies[i];
+      trial.advance(f0[i], t0[i], dt);
+      vEnd[i] = trial.velocity;
+      wEnd[i] = trial.angularVelocity;
+    }
+    model.dampingForces(cb, vEnd, wEnd, {}, {}, dt, f1, t1);
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      f0[i] += f1[i];
+      t0[i] += t1[i];
+    }
+  }
+  for (std::size_t i = 0; i < bodies.size(); ++i) bodies[i].advance(f0[i], t0[i], dt);
 }
 
 int collisionStep(std::vector<RigidBody>& bodies, CollisionModel& model, Scalar contactTime,

@@ -191,7 +191,17 @@ void Foam::immersedBodies::advanceBodies(const scalar t0, const scalar dt)
     vectorField Fc(nBodies, Zero), Tc(nBodies, Zero);
     vectorField Fc1, Tc1;
     vectorField FcMean(nBodies, Zero), TcMean(nBodies, Zero);
-    List<bodyState> states(nBodies);
+    List<bodyState> states(nBodies), startStates;
+    // the states the hydrodynamic force of this step responded to
+    List<bodyState> referenceStates;
+    if (colliding)
+    {
+        referenceStates.setSize(nBodies);
+        forAll(bodies_, i)
+        {
+            referenceStates[i] = bodies_[i].state();
+        }
+    }
 
     for (label stepi = 0; stepi < nSub; ++stepi)
     {
@@ -199,13 +209,13 @@ void Foam::immersedBodies::advanceBodies(const scalar t0, const scalar dt)
 
         if (colliding)
         {
-            // Heun: forces at the start, a predicted end state, forces there;
-            // the sub-step is taken with their mean
+            // Heun: contact forces at the start (damped pairs recorded),
+            // a predicted end state, forces there; their mean
             forAll(bodies_, i)
             {
                 states[i] = bodies_[i].state();
             }
-            collision_->forces(bodies_, states, dt, subDt, Fc, Tc);
+            collision_->forces(bodies_, states, dt, subDt, Fc, Tc, true);
             forAll(bodies_, i)
             {
                 if (bodies_[i].motion().moves())
@@ -213,9 +223,38 @@ void Foam::immersedBodies::advanceBodies(const scalar t0, const scalar dt)
                     advanceBody(bodies_[i], states[i], t, subDt, Fc[i], Tc[i]);
                 }
             }
-            collision_->forces(bodies_, states, dt, subDt, Fc1, Tc1);
+            collision_->forces(bodies_, states, dt, subDt, Fc1, Tc1, false);
             Fc = 0.5*(Fc + Fc1);
             Tc = 0.5*(Tc + Tc1);
+            if (collision_->damping())
+            {
+                // lubrication and the film correction, implicit in the
+                // velocities: the end of the sub-step under every other
+                // force, then the forces that give each damped pair its
+                // force at the end velocities (explicit, damping c >> m/dt
+                // would be unstable; the film correction also undoes the
+                // step's lag of the hydrodynamic force in thin films)
+                startStates.setSize(nBodies);
+                forAll(bodies_, i)
+                {
+                    startStates[i] = bodies_[i].state();
+                    states[i] = startStates[i];
+                    if (bodies_[i].motion().moves())
+                    {
+                        advanceBody
+                        (
+                            bodies_[i], states[i], t, subDt, Fc[i], Tc[i]
+                        );
+                    }
+                }
+                collision_->dampingForces
+                (
+                    bodies_, startStates, states, referenceStates, subDt,
+                    Fc1, Tc1
+                );
+                Fc += Fc1;
+                Tc += Tc1;
+            }
             FcMean += Fc/nSub;
             TcMean += Tc/nSub;
         }

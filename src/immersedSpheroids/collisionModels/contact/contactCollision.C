@@ -11,9 +11,11 @@ License
 #include "planeWalls.H"
 #include "dictionaryChecks.H"
 #include "IOdictionary.H"
+#include "volMesh.H"
 #include "dimensionedScalar.H"
 #include "addToRunTimeSelectionTable.H"
 
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -60,6 +62,26 @@ scalar optionalInRange
     return v;
 }
 
+//- The film gap: the filmGap entry, else the smallest cell size of the mesh
+//  (the cube root of the smallest cell volume, over all ranks)
+scalar readFilmGap(const dictionary& dict, const fvMesh& mesh)
+{
+    const string expected =
+        "the film thickness below which the mesh cannot resolve the flow"
+        " between two surfaces [m] > 0 (default: the smallest cell size)";
+    if (dict.found("filmGap"))
+    {
+        return immersedSpheroids::readPositive(dict, "filmGap", expected);
+    }
+    scalar vMin = GREAT;
+    for (const scalar v : mesh.V().field())
+    {
+        vMin = min(vMin, v);
+    }
+    reduce(vMin, minOp<scalar>());
+    return std::cbrt(vMin);
+}
+
 //- The dynamic viscosity: the viscosity entry, else rho_f nu of
 //  constant/transportProperties
 scalar readViscosity
@@ -102,7 +124,8 @@ scalar readViscosity
     {
         immersedSpheroids::entryError
         (
-            transport, "nu", "must be > 0 for the lubrication force"
+            transport, "nu",
+            "must be > 0 for the lubrication force and the film correction"
         );
     }
     return fluidDensity*nu.value();
@@ -137,13 +160,14 @@ vector toFoam(const collision::Vec3& v)
     wordList allowed
     ({
         "type", "walls", "restitution", "friction", "contactSteps",
-        "subStepsPerContact", "maxOverlap", "distanceAccuracy", "maxSubSteps"
+        "subStepsPerContact", "maxOverlap", "distanceAccuracy", "maxSubSteps",
+        "filmStabilisation", "filmGap", "viscosity"
     });
     if (lubrication)
     {
         allowed.append
         (
-            wordList({"viscosity", "pairActivation", "wallActivation", "saturation"})
+            wordList({"pairActivation", "wallActivation", "saturation"})
         );
     }
     checkKeywords(dict, allowed);
@@ -190,9 +214,17 @@ vector toFoam(const collision::Vec3& v)
             " (default 100000)"
         )
     );
-    if (lubrication)
+    s.filmStabilisation = readCheckedOrDefault<bool>
+    (
+        dict, "filmStabilisation", true,
+        "yes or no (default yes): the film correction for the pairs closer than filmGap"
+    );
+    if (lubrication || s.filmStabilisation)
     {
         s.viscosity = readViscosity(dict, mesh, fluidDensity);
+    }
+    if (lubrication)
+    {
         s.lubrication.saturation = optionalInRange
         (
             dict, "saturation", 1e-3, 1e-12, 0.5,
@@ -261,6 +293,7 @@ void Foam::collisionModels::contact::convert
         // fixed bodies are immovable obstacles; prescribed ones move (their
         // speed counts for the sub-steps) but are infinitely heavy
         c.movable = body.motion().moves();
+        c.filmGap = filmGap_;
         c.mass =
             body.motion().isFreeInTranslation()
           ? body.mass()
@@ -304,6 +337,10 @@ Foam::collisionModels::contact::contact
         readSettings(dict, mesh, fluidDensity, mode),
         immersedSpheroids::planeWalls(mesh, dict, "walls")
     ),
+    filmGap_
+    (
+        model_.settings().filmStabilisation ? readFilmGap(dict, mesh) : 0
+    ),
     calls_(0)
 {
     const collision::CollisionSettings& s = model_.settings();
@@ -318,6 +355,11 @@ Foam::collisionModels::contact::contact
             << s.lubrication.pairActivation << " (pairs) "
             << s.lubrication.wallActivation << " (walls), saturation "
             << s.lubrication.saturation;
+    }
+    if (s.filmStabilisation)
+    {
+        Info<< ", film correction below " << filmGap_ << " m (mu " << s.viscosity
+            << ")";
     }
     Info<< ", walls (";
     for (const collision::PlaneWall& w : model_.walls())
@@ -375,13 +417,18 @@ void Foam::collisionModels::contact::forces
     const scalar dt,
     const scalar subDt,
     vectorField& force,
-    vectorField& torque
+    vectorField& torque,
+    const bool recordDamping
 )
 {
     convert(bodies, states);
     try
     {
-        model_.forces(collisionBodies_, contactSteps_*dt, subDt, force_, torque_);
+        model_.forces
+        (
+            collisionBodies_, contactSteps_*dt, subDt, force_, torque_,
+            recordDamping
+        );
     }
     catch (const std::exception& err)
     {
@@ -390,6 +437,53 @@ void Foam::collisionModels::contact::forces
             << err.what() << nl << exit(FatalError);
     }
     ++calls_;
+    force.setSize(bodies.size());
+    torque.setSize(bodies.size());
+    forAll(bodies, i)
+    {
+        force[i] = toFoam(force_[i]);
+        torque[i] = toFoam(torque_[i]);
+    }
+}
+
+
+void Foam::collisionModels::contact::dampingForces
+(
+    const PtrList<immersedBody>& bodies,
+    const UList<bodyState>& startStates,
+    const UList<bodyState>& endStates,
+    const UList<bodyState>& referenceStates,
+    const scalar subDt,
+    vectorField& force,
+    vectorField& torque
+)
+{
+    convert(bodies, startStates);
+    endVelocity_.resize(bodies.size());
+    endAngularVelocity_.resize(bodies.size());
+    refVelocity_.resize(bodies.size());
+    refAngularVelocity_.resize(bodies.size());
+    forAll(bodies, i)
+    {
+        endVelocity_[i] = toEigen(endStates[i].velocity);
+        endAngularVelocity_[i] = toEigen(endStates[i].angularVelocity);
+        refVelocity_[i] = toEigen(referenceStates[i].velocity);
+        refAngularVelocity_[i] = toEigen(referenceStates[i].angularVelocity);
+    }
+    try
+    {
+        model_.dampingForces
+        (
+            collisionBodies_, endVelocity_, endAngularVelocity_,
+            refVelocity_, refAngularVelocity_, subDt, force_, torque_
+        );
+    }
+    catch (const std::exception& err)
+    {
+        FatalErrorInFunction
+            << "Damping forces at time " << mesh_.time().value() << ": "
+            << err.what() << nl << exit(FatalError);
+    }
     force.setSize(bodies.size());
     torque.setSize(bodies.size());
     forAll(bodies, i)
@@ -415,7 +509,24 @@ void Foam::collisionModels::contact::report(const label nSubSteps)
     {
         Info<< ", lubricated " << st.lubricated/calls;
     }
+    if (model_.settings().filmStabilisation)
+    {
+        Info<< ", film pairs " << st.filmPairs/calls;
+    }
+    if (st.dampingSolves > 0)
+    {
+        Info<< " (implicit damping: "
+            << st.dampingSweeps/scalar(st.dampingSolves) << " sweeps)";
+    }
     Info<< endl;
+    if (st.dampingNotConverged > 0)
+    {
+        WarningInFunction
+            << st.dampingNotConverged << " implicit damping solves of"
+            << " this step stopped at "
+            << collision::CollisionModel::kMaxDampingSweeps
+            << " sweeps; their last iterate was used" << endl;
+    }
     if (st.distanceNotConverged > 0)
     {
         WarningInFunction
@@ -431,26 +542,28 @@ void Foam::collisionModels::contact::report(const label nSubSteps)
 
 void Foam::collisionModels::contact::readHistory(const dictionary& dict)
 {
-    // (first second warm dx dy dz contactTime springForce stiffness overlap);
-    // the 7-entry form of earlier versions starts the spring from k delta
+    // (first second warm dx dy dz contactTime springForce stiffness overlap
+    // age); the 10-entry form of earlier versions has no age (taken as 0),
+    // the 7-entry form starts the spring from k delta
     const List<scalarList> records =
         immersedSpheroids::readCheckedOrDefault<List<scalarList>>
         (
             dict, "collisionPairs", List<scalarList>(),
             "a list of (first second warm dx dy dz contactTime springForce"
-            " stiffness overlap)"
+            " stiffness overlap age)"
         );
     std::vector<collision::PairRecord> history;
     for (const scalarList& r : records)
     {
-        if (r.size() != 10 && r.size() != 7)
+        if (r.size() != 11 && r.size() != 10 && r.size() != 7)
         {
             immersedSpheroids::entryError
             (
                 dict, "collisionPairs",
                 "a record has " + std::to_string(r.size()) + " entries; allowed:"
-                " 10 (first second warm dx dy dz contactTime springForce"
-                " stiffness overlap) or 7 (without the last three)"
+                " 11 (first second warm dx dy dz contactTime springForce"
+                " stiffness overlap age), 10 (without age) or 7 (without the"
+                " last four)"
             );
         }
         collision::PairRecord p;
@@ -459,11 +572,15 @@ void Foam::collisionModels::contact::readHistory(const dictionary& dict)
         p.warm = r[2] > 0.5;
         p.direction = collision::Vec3(r[3], r[4], r[5]);
         p.contactTime = r[6];
-        if (r.size() == 10)
+        if (r.size() >= 10)
         {
             p.springForce = r[7];
             p.stiffness = r[8];
             p.overlap = r[9];
+        }
+        if (r.size() == 11)
+        {
+            p.age = r[10];
         }
         history.push_back(p);
     }
@@ -481,15 +598,15 @@ void Foam::collisionModels::contact::readHistory(const dictionary& dict)
 void Foam::collisionModels::contact::writeHistory(Ostream& os) const
 {
     const std::vector<collision::PairRecord> history = model_.history();
-    List<FixedList<scalar, 10>> records(label(history.size()));
+    List<FixedList<scalar, 11>> records(label(history.size()));
     forAll(records, i)
     {
         const collision::PairRecord& p = history[i];
-        records[i] = FixedList<scalar, 10>
+        records[i] = FixedList<scalar, 11>
         ({
             scalar(p.first), scalar(p.second), p.warm ? 1.0 : 0.0,
             p.direction.x(), p.direction.y(), p.direction.z(), p.contactTime,
-            p.springForce, p.stiffness, p.overlap
+            p.springForce, p.stiffness, p.overlap, p.age
         });
     }
     os.writeEntry("collisionPairs", records);

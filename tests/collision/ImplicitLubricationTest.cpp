@@ -1,0 +1,249 @@
+// The damping forces implicit in the velocities (CollisionModel::dampingForces):
+// lubrication as exact backward Euler for one pair, the coupled solve for a
+// stack, a body pressed onto a wall with sub-steps far longer than m/c (where
+// an explicit lubrication force flips the velocity's sign and grows every
+// sub-step), and the film correction against a flow force that lags a step.
+#include "collision/RigidBody.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace collision;
+
+namespace {
+
+RigidBody sphere(Scalar r, const Vec3& c, const Vec3& u, Scalar density = 2000) {
+  RigidBody b;
+  b.semiAxes = Vec3::Constant(r);
+  b.centre = c;
+  b.velocity = u;
+  b.density = density;
+  return b;
+}
+
+CollisionSettings lubricated(Scalar mu) {
+  CollisionSettings s;
+  s.mode = CollisionMode::lubricationContact;
+  s.viscosity = mu;
+  s.contact.restitution = 0.9;
+  return s;
+}
+
+const PlaneWall floorWall{"floor", Vec3::Zero(), Vec3::UnitZ()};
+
+/// The end velocities of the bodies under an acceleration g alone over dt.
+void freeEnd(const std::vector<RigidBody>& b, const Vec3& g, Scalar dt, std::vector<Vec3>& v,
+             std::vector<Vec3>& w) {
+  v.clear();
+  w.clear();
+  for (const RigidBody& x : b) {
+    v.push_back(x.movable ? Vec3(x.velocity + g * dt) : x.velocity);
+    w.push_back(x.angularVelocity);
+  }
+}
+
+std::vector<CollisionBody> collisionBodies(const std::vector<RigidBody>& b) {
+  std::vector<CollisionBody> cb;
+  for (const RigidBody& x : b) cb.push_back(x.collisionBody());
+  return cb;
+}
+
+}  // namespace
+
+TEST(ImplicitLubrication, OnePairIsExactBackwardEuler) {
+  // a sphere 1e-3 a above the floor approaching at 1 cm/s; sub-step 1 ms,
+  // c dt/m of order 100: the end velocity is u/(1 + c dt/m), the force -c u_end
+  const Scalar a = 2e-3, mu = 0.07, dt = 1e-3;
+  std::vector<RigidBody> b{sphere(a, Vec3(0, 0, a * 1.001), Vec3(0, 0, -0.01))};
+  CollisionModel model(lubricated(mu), {floorWall});
+  const auto cb = collisionBodies(b);
+  std::vector<Vec3> F, T, v, w;
+  model.forces(cb, 10 * dt, dt, F, T);
+  EXPECT_EQ(F[0].norm(), 0) << "forces() leaves the lubrication to dampingForces()";
+  ASSERT_EQ(model.dampedPairs().size(), 1u);
+  const Scalar c = model.dampedPairs()[0].lubrication;
+  const Scalar m = b[0].mass();
+  EXPECT_GT(c * dt / m, 20) << "the case is stiff (an explicit force needs c dt/m < 2)";
+  freeEnd(b, Vec3::Zero(), dt, v, w);
+  model.dampingForces(cb, v, w, {}, {}, dt, F, T);
+  const Scalar uEnd = v[0].z() + F[0].z() * dt / m;
+  EXPECT_NEAR(uEnd, -0.01 / (1 + c * dt / m), 1e-12);
+  EXPECT_NEAR(F[0].z(), -c * uEnd, 1e-9 * c * 0.01);
+  EXPECT_NEAR(F[0].x(), 0, 1e-15);
+  EXPECT_NEAR(T[0].norm(), 0, 1e-15) << "the normal through the centre: no torque";
+  EXPECT_EQ(model.statistics().dampingSweeps, 2) << "one sweep solves, one confirms";
+}
+
+TEST(ImplicitLubrication, AStackIsSolvedTogetherAndLosesEnergy) {
+  // floor, sphere A just above it, sphere B just above A, C off to the side
+  // touching B obliquely: three coupled pairs, all stiff
+  const Scalar a = 1e-3, mu = 0.1, dt = 2e-3;
+  std::vector<RigidBody> b{sphere(a, Vec3(0, 0, a * 1.002), Vec3(0.001, 0, -0.02)),
+                           sphere(a, Vec3(0, 0, 3.004 * a), Vec3(0, 0.002, -0.05)),
+                           sphere(a, Vec3(1.415 * a, 0, 4.419 * a), Vec3(-0.03, 0, 0.01))};
+  b[2].angularVelocity = Vec3(0, 30, 5);
+  CollisionSettings s = lubricated(mu);
+  s.lubrication.pairActivation = 0.05;
+  CollisionModel model(s, {floorWall});
+  const auto cb = collisionBodies(b);
+  std::vector<Vec3> F, T, v, w;
+  model.forces(cb, 10 * dt, dt, F, T);
+  const std::vector<DampedPair> pairs = model.dampedPairs();
+  ASSERT_EQ(pairs.size(), 3u);
+  freeEnd(b, Vec3(0, 0, -9.81), dt, v, w);
+  Scalar energyBefore = 0, energyAfter = 0;
+  std::vector<Vec3> vEnd(3), wEnd(3);
+  model.dampingForces(cb, v, w, {}, {}, dt, F, T);
+  for (int i = 0; i < 3; ++i) {
+    const Scalar m = b[i].mass();
+    const Mat3 I = b[i].worldInertia(b[i].orientation);
+    vEnd[i] = v[i] + F[i] * dt / m;
+    wEnd[i] = w[i] + I.inverse() * T[i] * dt;
+    energyBefore += 0.5 * m * v[i].squaredNorm() + 0.5 * w[i].dot(I * w[i]);
+    energyAfter += 0.5 * m * vEnd[i].squaredNorm() + 0.5 * wEnd[i].dot(I * wEnd[i]);
+  }
+  // every pair: its share of the forces is -c u_n(end) n
+  Scalar largest = 0;
+  for (const DampedPair& p : pairs) {
+    Vec3 rel = -(vEnd[p.first] + wEnd[p.first].cross(p.arm1));
+    if (p.second >= 0) rel += vEnd[p.second] + wEnd[p.second].cross(p.arm2);
+    largest = std::max(largest, std::abs(rel.dot(p.normal)));
+  }
+  EXPECT_GT(largest, 0);
+  // reconstruct each pair's force from the equations: body B carries the
+  // pairs (A, B) and (B, C); its net force must equal the sum of both laws
+  Vec3 expectedB = Vec3::Zero();
+  for (const DampedPair& p : pairs) {
+    Vec3 rel = -(vEnd[p.first] + wEnd[p.first].cross(p.arm1));
+    if (p.second >= 0) rel += vEnd[p.second] + wEnd[p.second].cross(p.arm2);
+    const Vec3 onSecond = -p.lubrication * rel.dot(p.normal) * p.normal;
+    if (p.first == 1) expectedB -= onSecond;
+    if (p.second == 1) expectedB += onSecond;
+  }
+  EXPECT_LE((F[1] - expectedB).norm(), 1e-7 * F[1].norm()) << F[1].transpose() << " vs "
+                                                           << expectedB.transpose();
+  EXPECT_LT(energyAfter, energyBefore);
+  EXPECT_EQ(model.statistics().dampingNotConverged, 0);
+  EXPECT_LT(model.statistics().dampingSweeps, CollisionModel::kMaxDampingSweeps);
+}
+
+TEST(ImplicitLubrication, ABodyPressedOntoAWallCreepsWithoutOscillating) {
+  // a heavy sphere released just above the floor in a viscous liquid, gravity
+  // (reduced by buoyancy) pressing it down, fluid-step sized sub-steps (c dt/m
+  // up to ~1e3): the speed of the gap decreases monotonically towards the
+  // film's creeping speed m g'/c, never changes sign and never exceeds the
+  // free fall of one step
+  const Scalar a = 2e-3, mu = 0.07, dt = 2e-3;
+  const Vec3 g(0, 0, -9.81 * 0.5);
+  std::vector<RigidBody> b{sphere(a, Vec3(0, 0, a * 1.05), Vec3::Zero())};
+  CollisionModel model(lubricated(mu), {floorWall});
+  std::vector<Vec3> F, T, Fl, Tl, v, w;
+  int creeping = 0;  // steps compared with the creeping speed
+  for (int step = 0; step < 400; ++step) {
+    const auto cb = collisionBodies(b);
+    model.forces(cb, 10 * dt, dt, F, T);
+    freeEnd(b, g, dt, v, w);
+    for (std::size_t i = 0; i < b.size(); ++i) v[i] += F[i] * dt / b[i].mass();
+    model.dampingForces(cb, v, w, {}, {}, dt, Fl, Tl);
+    const Scalar uBefore = b[0].velocity.z();
+    b[0].advance(F[0] + Fl[0] + b[0].mass() * g, T[0] + Tl[0], dt);
+    const Scalar u = b[0].velocity.z();
+    ASSERT_TRUE(std::isfinite(u));
+    ASSERT_LE(u, 0) << "step " << step << ": the sphere must not be thrown back";
+    ASSERT_GE(u, uBefore + g.z() * dt - 1e-12) << "step " << step;
+    const Scalar gap = b[0].centre.z() - a;
+    if (gap <= 0) break;  // touching: the contact law takes over
+    if (!model.dampedPairs().empty()) {
+      const Scalar c = model.dampedPairs()[0].lubrication;
+      const Scalar creep = b[0].mass() * g.z() / c;
+      // inside the film: within 5 % of the creeping speed from the eighth
+      // step (the speed follows c(gap), lagging by a step, down to the gap
+      // where c saturates)
+      if (step >= 8) {
+        EXPECT_NEAR(u, creep, 0.05 * std::abs(creep)) << "step " << step;
+        ++creeping;
+      }
+    }
+  }
+  EXPECT_GE(creeping, 15);
+  EXPECT_LT(b[0].centre.z() - a, 0.05 * a) << "it did come down";
+}
+
+TEST(ImplicitLubrication, TheFilmCorrectionTurnsALaggedFlowDampingStable) {
+  // a body lying on a wall in a thin film (contact only: no lubrication law),
+  // pushed by a flow force that damps its normal velocity with D_t but from
+  // the velocity at the start of the step, as an explicit coupled solver does:
+  // D_t dt/m = 5, far past the explicit limit 2. Without the film correction
+  // the velocity alternates in sign and grows; with it (D_e the model's
+  // estimate, here half of D_t) it decays
+  const Scalar a = 2e-3, mu = 0.07, dt = 4e-3, cell = 6.7e-4;
+  for (const bool film : {false, true}) {
+    CollisionSettings s;
+    s.mode = CollisionMode::contact;
+    s.viscosity = mu;
+    s.filmStabilisation = film;
+    CollisionModel model(s, {floorWall});
+    std::vector<RigidBody> b{sphere(a, Vec3(0, 0, a + 0.2 * cell), Vec3(0, 0, -0.01))};
+    const Scalar m = b[0].mass();
+    auto cb = collisionBodies(b);
+    cb[0].filmGap = cell;
+    std::vector<Vec3> F, T, Fd, Td, v, w;
+    model.forces(cb, 10 * dt, dt, F, T);
+    // the model's estimate D = 6 pi mu R^2 / max(h, filmGap/4) at h = 0.2 cell
+    const Scalar estimate = 6 * 3.14159265358979 * mu * a * a / (0.25 * cell);
+    const Scalar trueDamping = 2 * estimate;
+    ASSERT_GT(trueDamping * dt / m, 3) << "the lagged damping alone is unstable (limit 2)";
+    if (film) {
+      ASSERT_EQ(model.dampedPairs().size(), 1u);
+      EXPECT_NEAR(model.dampedPairs()[0].film, estimate, 1e-9 * estimate);
+    } else {
+      EXPECT_TRUE(model.dampedPairs().empty());
+    }
+    Scalar first = 0, last = 0;
+    for (int step = 0; step < 40; ++step) {
+      const Vec3 start = b[0].velocity;
+      const Vec3 flow(0, 0, -trueDamping * start.z());  // lagged by the step
+      // keep the gap: this test is about the velocity only
+      b[0].centre.z() = a + 0.2 * cell;
+      cb = collisionBodies(b);
+      cb[0].filmGap = cell;
+      model.forces(cb, 10 * dt, dt, F, T);
+      v = {start + (F[0] + flow) * dt / m};
+      w = {b[0].angularVelocity};
+      model.dampingForces(cb, v, w, {start}, {b[0].angularVelocity}, dt, Fd, Td);
+      b[0].velocity = v[0] + Fd[0] * dt / m;
+      ASSERT_TRUE(b[0].velocity.allFinite());
+      if (step == 1) first = std::abs(b[0].velocity.z());
+      last = std::abs(b[0].velocity.z());
+    }
+    if (film) {
+      EXPECT_LT(last, 1e-6 * first) << "decays with the correction";
+    } else {
+      EXPECT_GT(last, 1e6 * first) << "grows without it (the instability the correction removes)";
+    }
+  }
+}
+
+TEST(ImplicitLubrication, TheFilmCorrectionLeavesASteadyMotionAlone) {
+  // reference velocities equal to the end velocities: no force from the film
+  const Scalar a = 2e-3, cell = 6.7e-4;
+  CollisionSettings s;
+  s.mode = CollisionMode::contact;
+  s.viscosity = 0.07;
+  CollisionModel model(s, {floorWall});
+  std::vector<RigidBody> b{sphere(a, Vec3(0, 0, a + 0.5 * cell), Vec3(0.01, 0, -0.003))};
+  auto cb = collisionBodies(b);
+  cb[0].filmGap = cell;
+  std::vector<Vec3> F, T;
+  model.forces(cb, 1e-2, 1e-3, F, T);
+  ASSERT_EQ(model.dampedPairs().size(), 1u);
+  EXPECT_EQ(model.dampedPairs()[0].lubrication, 0);
+  model.dampingForces(cb, {b[0].velocity}, {b[0].angularVelocity}, {b[0].velocity}, {b[0].angularVelocity},
+                      1e-3, F, T);
+  EXPECT_LT(F[0].norm(), 1e-15);
+  // beyond the film gap: no pair
+  cb[0].filmGap = 0.4 * cell;
+  model.forces(cb, 1e-2, 1e-3, F, T);
+  EXPECT_TRUE(model.dampedPairs().empty());
+}

@@ -26,6 +26,7 @@ python3-h5py, python3-numpy and python3-matplotlib (/usr/bin/python3).
 """
 import math
 import os
+import re
 import sys
 
 import h5py
@@ -108,6 +109,27 @@ def stage_list(case):
     return [float(s) for s in text.split()], float(T)
 
 
+def contacts_per_stage(case, stages, T):
+    """Mean of the log's 'in contact now N' (body pairs and body-wall pairs) over the second
+    half of each stage; None without the solver log (e.g. a reconstructed copy)."""
+    log = os.path.join(case, "log.immersedSpheroidFoam")
+    if not os.path.exists(log):
+        return None
+    sums, counts, time = [0] * len(stages), [0] * len(stages), 0.0
+    with open(log) as f:
+        for line in f:
+            if line.startswith("Time = "):
+                time = float(line.split()[2])
+                continue
+            m = re.search(r"in contact now (\d+)", line)
+            if m:
+                i = int(time // T)
+                if 0 <= i < len(stages) and time >= (i + 0.5) * T:
+                    sums[i] += int(m.group(1))
+                    counts[i] += 1
+    return [sums[i] / counts[i] if counts[i] else None for i in range(len(stages))]
+
+
 def rowe(re_t):
     return (4.7 + 0.41 * re_t ** 0.75) / (1 + 0.175 * re_t ** 0.75)
 
@@ -163,10 +185,14 @@ def bed(case):
         rows += [("n measured (slope through u_t)", f"{fit['origin']:.3f}"),
                  ("n measured (free fit), u_i/u_t", f"{fit['free'][0]:.3f}, "
                                                     f"{fit['free'][1]:.3f}")]
-    for s, e, sd, h in means:
+    contacts = contacts_per_stage(case, stages, T)
+    for i, (s, e, sd, h) in enumerate(means):
         rows.append((f"stage U/u_t = {s:g}: voidage (mean +- sd), bed height",
                      f"{e:.4f} +- {sd:.4f} (RZ Rowe {s ** (1 / n_rowe):.4f}, KR "
                      f"{s ** (1 / n_kr):.4f}), H = {h / D:.2f} D"))
+        if contacts and contacts[i] is not None:
+            rows.append((f"stage U/u_t = {s:g}: contacts (pairs and walls, mean)",
+                         f"{contacts[i]:.1f}"))
     rows_all, fast, top = fast_rows(t, v)
     rows.append(("rows with a body faster than 0.15 m/s (about 2 u_t); largest body speed",
                  f"{fast} of {rows_all}; {top * 1e3:.0f} mm/s"))

@@ -115,20 +115,26 @@ def analyse(h5):
         out.update(touched=False)
         return out
     i0 = touched[0]
-    # impacts: runs of rows with a collision force (a tilted prolate body hits
-    # with one end, turns, and may hit again with the other)
-    impacts = 1 + int(np.sum(np.diff(touched) > 1))
+    # impacts: runs of rows in contact (gap < 0; a tilted prolate body hits
+    # with one end, turns, and may hit again with the other). Not the rows
+    # with a collision force: the lubrication and the film correction act
+    # between the impacts too
+    contact = np.flatnonzero(gap < 0)
+    if len(contact) == 0:
+        contact = touched
+    breaks = np.flatnonzero(np.diff(contact) > 1)
+    impacts = 1 + len(breaks)
+    starts = contact[np.r_[0, breaks + 1]]
     i1 = min(touched[-1] + 1, len(t) - 1)
-    # rebound state: after the last collision force (lubrication included)
-    starts = touched[np.r_[0, np.flatnonzero(np.diff(touched) > 1) + 1]]
+    # the approach: before the first collision force; the rebound state: after
+    # the last one (lubrication and film correction included)
     out.update(touched=True, i0=i0, i1=i1, impacts=impacts, u_in=u[i0 - 1], u_out=u[i1],
                w_out=w[i1], tilt_in=tilt[i0 - 1], tilt_out=tilt[i1],
                max_overlap=max(-gap.min(), 0) / b,
                max_omega=np.abs(w[:, 1]).max(), max_tilt=tilt.max(),
                impact_gap=(t[starts[-1]] - t[starts[0]]) if impacts > 1 else 0.0,
                # the centre's vertical velocity when the first impact has ended
-               u_z_after_first=u[touched[np.flatnonzero(np.diff(touched) > 1)[0]] + 1, 2]
-               if impacts > 1 else float("nan"))
+               u_z_after_first=u[contact[breaks[0]] + 1, 2] if impacts > 1 else float("nan"))
     return out
 
 

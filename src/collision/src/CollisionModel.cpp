@@ -101,7 +101,6 @@ std::vector<PairRecord> CollisionModel::history() const {
     r.springForce = c.springForce;
     r.stiffness = c.stiffness;
     r.overlap = c.overlap;
-    r.age = c.age;
   }
   std::vector<PairRecord> out;
   out.reserve(merged.size());
@@ -124,13 +123,12 @@ void CollisionModel::setHistory(const std::vector<PairRecord>& records) {
     require(!r.warm || (r.direction.allFinite() && r.direction.norm() > 0),
             "pair history " + pair + ": the warm-start direction must be finite and non-zero");
     require(std::isfinite(r.springForce) && r.springForce >= 0 && std::isfinite(r.stiffness) &&
-                r.stiffness >= 0 && std::isfinite(r.overlap) && r.overlap >= 0 &&
-                std::isfinite(r.age) && r.age >= 0,
-            "pair history " + pair + ": spring force, stiffness, overlap and age must be finite and >= 0");
+                r.stiffness >= 0 && std::isfinite(r.overlap) && r.overlap >= 0,
+            "pair history " + pair + ": spring force, stiffness and overlap must be finite and >= 0");
     if (r.warm) direction_[key(r.first, r.second)] = r.direction;
     if (r.contactTime > 0) {
       contact_[key(r.first, r.second)] =
-          ContactState{r.contactTime, r.springForce, r.stiffness, r.overlap, r.age};
+          ContactState{r.contactTime, r.springForce, r.stiffness, r.overlap, Vec3::Zero()};
     }
   }
 }
@@ -264,11 +262,35 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
 
   direction_.swap(nextDirection_);
   contact_.swap(nextContact_);
+  lastContactForce_ = force;  // contact forces only: the damping is added by dampingForces()
   for (int i = 0; i < n; ++i) {
     if (!force[i].allFinite() || !torque[i].allFinite()) {
       throw std::runtime_error("collision: non-finite collision force on body " + std::to_string(i));
     }
   }
+}
+
+Scalar CollisionModel::sustainedLoad(const std::vector<CollisionBody>& bodies, int i, int j,
+                                     const Vec3& n, const Vec3& ownForce) const {
+  // the acceleration of a body from everything but this pair's contact
+  // (ownForce: this pair's last force on the second body, minus on the first)
+  const bool known = lastContactForce_.size() == bodies.size();
+  auto acceleration = [&](int b, const Vec3& own, Scalar& inverseMass) -> Vec3 {
+    if (b < 0 || !bodies[b].movable || !std::isfinite(bodies[b].mass)) {
+      inverseMass = 0;
+      return Vec3::Zero();
+    }
+    inverseMass = 1 / bodies[b].mass;
+    Vec3 f = bodies[b].externalForce;
+    if (known) f += lastContactForce_[b] - own;
+    return f * inverseMass;
+  };
+  Scalar w1 = 0, w2 = 0;
+  const Vec3 a1 = acceleration(i, -ownForce, w1);
+  const Vec3 a2 = acceleration(j, ownForce, w2);
+  const Scalar pressing = (a1 - a2).dot(n);  // > 0: body 1 pushed towards body 2
+  if (!(pressing > 0) || !(w1 + w2 > 0)) return 0;
+  return pressing / (w1 + w2);
 }
 
 void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, int j, Scalar gap,
@@ -332,14 +354,14 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
       // a sustained load (gravity, the flow, bodies above): a spring made for
       // an impact's contact time can be far too soft to carry it (the static
       // overlap of a body of weight W is W/k = g' T_c^2/(pi^2 + ln^2 e): half a
-      // semi-axis for a 4 mm body and T_c = 40 ms). Still pressed in after half
-      // the contact time (an impact's compression is over by then) and past
-      // half the cap, the spring is stiffened so that its present elastic
-      // force is held within the overlap still allowed (a quarter of the cap
-      // at least): k >= F / left, a barrier at the cap that only the load sets
-      if (un < 0 && overlap > Scalar(0.5) * cap && c.age > Scalar(0.5) * c.contactTime) {
-        const Scalar held = std::max(cap - overlap, Scalar(0.25) * cap);
-        const Scalar needed = c.springForce / held;
+      // semi-axis for a 4 mm body and T_c = 40 ms). The spring is stiffened so
+      // that the static load pressing the pair together overlaps it by at
+      // most half the cap: k >= 2 W/cap. W from the bodies' external forces
+      // and the contact forces of their other pairs (the last call's, less
+      // this pair's own); the spring of an impact without a load is left alone
+      const Scalar load = sustainedLoad(bodies, i, j, n, known != contact_.end() ? c.force : Vec3::Zero());
+      if (load > 0) {
+        const Scalar needed = 2 * load / cap;
         if (needed > law.stiffness) {
           const Scalar ratio = std::sqrt(needed / law.stiffness);
           law.stiffness = needed;
@@ -350,8 +372,9 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
       }
       c.stiffness = law.stiffness;
       c.overlap = overlap;
-      if (recordDamping_) c.age += subDt;  // once per sub-step (its first call)
-      f2 += contactForce(c.springForce, n, relative, law, s1, s2, settings_.contact.friction, subDt);
+      const Vec3 fContact = contactForce(c.springForce, n, relative, law, s1, s2, settings_.contact.friction, subDt);
+      c.force = fContact;
+      f2 += fContact;
     }
     nextContact_[k] = c;
     ++(wall ? statistics_.wallContacts : statistics_.contacts);

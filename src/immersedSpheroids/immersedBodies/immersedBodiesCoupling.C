@@ -192,15 +192,22 @@ void Foam::immersedBodies::advanceBodies(const scalar t0, const scalar dt)
     vectorField Fc1, Tc1;
     vectorField FcMean(nBodies, Zero), TcMean(nBodies, Zero);
     List<bodyState> states(nBodies), startStates;
-    // the states the hydrodynamic force of this step responded to
+    // the states the hydrodynamic force of this step responded to, and the
+    // bodies' other forces of the step (the load they bring to contacts)
     List<bodyState> referenceStates;
     if (colliding)
     {
         referenceStates.setSize(nBodies);
+        vectorField external(nBodies);
         forAll(bodies_, i)
         {
-            referenceStates[i] = bodies_[i].state();
+            const immersedBody& body = bodies_[i];
+            referenceStates[i] = body.state();
+            external[i] =
+                body.hydroForce()
+              + (body.density() - fluidDensity_)*body.volume()*g_;
         }
+        collision_->setExternalForces(external);
     }
 
     for (label stepi = 0; stepi < nSub; ++stepi)

@@ -34,12 +34,14 @@
  *     the overlap still allowed (at least half the cap), stiffening the
  *     spring from then on; the elastic force is integrated as dF = k_n
  *     d(delta) so that the stiffer spring never returns more work than it
- *     took (with the dashpot's pull off once F is spent). A contact that is
- *     still pressed in after half its contact time (an impact's compression
- *     is over by then) carries a sustained load (weight, the flow, bodies
- *     above): past half the cap its spring is stiffened to hold its present
- *     elastic force within the overlap still allowed, k_n >= F/max(cap - delta,
- *     cap/4), as a spring made for an impact can be far too soft for it;
+ *     took (with the dashpot's pull off once F is spent). A sustained load
+ *     (weight, the flow, bodies above) can be far too much for a spring made
+ *     for an impact's contact time: each contact is stiffened, at any call,
+ *     to k_n >= 2 W/cap, W the static load pressing the pair together (the
+ *     bodies' external forces, CollisionBody::externalForce, and the contact
+ *     forces of their other pairs in the previous call), so that W alone
+ *     overlaps the pair by at most half the cap; an impact without a load is
+ *     left alone;
  *  5. lubrication (LubricationLaw) with the Gaussian curvature radii at the
  *     closest points, between the activation and saturation gaps, held at its
  *     saturated value down to touching and off in contact (overlap). Its
@@ -144,6 +146,9 @@ struct CollisionBody {
   /// the thickness below which the flow solver cannot resolve a film at this
   /// body (its cell size); 0: no film correction
   Scalar filmGap = 0;
+  /// every force on the body but the collision forces (weight less buoyancy,
+  /// the flow): the sustained load it brings to its contacts
+  Vec3 externalForce = Vec3::Zero();
 };
 
 struct CollisionStatistics {
@@ -187,7 +192,6 @@ struct PairRecord {
   Scalar springForce = 0;
   Scalar stiffness = 0;
   Scalar overlap = 0;
-  Scalar age = 0;                 ///< time in contact so far (0 in histories that predate it)
 };
 
 class CollisionModel {
@@ -268,6 +272,11 @@ class CollisionModel {
 
  private:
   bool filmsOn() const { return settings_.filmStabilisation && settings_.viscosity > 0; }
+  /// The static load (N) pressing bodies i and j (j < 0: a wall) together
+  /// along n (from i to j), from their external forces and their other
+  /// contacts; ownForce: this pair's last contact force on j
+  Scalar sustainedLoad(const std::vector<CollisionBody>& bodies, int i, int j, const Vec3& n,
+                       const Vec3& ownForce) const;
   static std::uint64_t key(int i, int j) {
     return (std::uint64_t(std::uint32_t(i)) << 32) | std::uint32_t(j);
   }
@@ -295,13 +304,15 @@ class CollisionModel {
     Scalar springForce = 0;  ///< elastic normal force, updated incrementally
     Scalar stiffness = 0;    ///< k_n of the contact (0: set at the next call)
     Scalar overlap = 0;      ///< overlap of the last call
-    Scalar age = 0;          ///< time in contact (sub-steps of the recording calls)
+    Vec3 force = Vec3::Zero();  ///< the contact force on the second body in the last call
   };
   /// the state of each pair in contact
   std::unordered_map<std::uint64_t, ContactState> contact_, nextContact_;
   CollisionStatistics statistics_;
   bool recordDamping_ = true;
   std::vector<DampedPair> damped_;
+  /// each body's contact forces of the last call (the load of its other contacts)
+  std::vector<Vec3> lastContactForce_;
   std::vector<Scalar> impulse_;  ///< dampingForces(): the pairs' normal impulses
   std::vector<Scalar> pairInverseMass_, pairReferenceSpeed_;  ///< dampingForces() scratch
 };

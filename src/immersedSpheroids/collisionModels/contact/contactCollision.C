@@ -294,6 +294,10 @@ void Foam::collisionModels::contact::convert
         // speed counts for the sub-steps) but are infinitely heavy
         c.movable = body.motion().moves();
         c.filmGap = filmGap_;
+        if (externalForces_.size() == bodies.size())
+        {
+            c.externalForce = toEigen(externalForces_[i]);
+        }
         c.mass =
             body.motion().isFreeInTranslation()
           ? body.mass()
@@ -494,6 +498,15 @@ void Foam::collisionModels::contact::dampingForces
 }
 
 
+void Foam::collisionModels::contact::setExternalForces
+(
+    const vectorField& externalForces
+)
+{
+    externalForces_ = externalForces;
+}
+
+
 void Foam::collisionModels::contact::report(const label nSubSteps)
 {
     const collision::CollisionStatistics& st = model_.statistics();
@@ -542,28 +555,26 @@ void Foam::collisionModels::contact::report(const label nSubSteps)
 
 void Foam::collisionModels::contact::readHistory(const dictionary& dict)
 {
-    // (first second warm dx dy dz contactTime springForce stiffness overlap
-    // age); the 10-entry form of earlier versions has no age (taken as 0),
-    // the 7-entry form starts the spring from k delta
+    // (first second warm dx dy dz contactTime springForce stiffness overlap);
+    // the 7-entry form of earlier versions starts the spring from k delta
     const List<scalarList> records =
         immersedSpheroids::readCheckedOrDefault<List<scalarList>>
         (
             dict, "collisionPairs", List<scalarList>(),
             "a list of (first second warm dx dy dz contactTime springForce"
-            " stiffness overlap age)"
+            " stiffness overlap)"
         );
     std::vector<collision::PairRecord> history;
     for (const scalarList& r : records)
     {
-        if (r.size() != 11 && r.size() != 10 && r.size() != 7)
+        if (r.size() != 10 && r.size() != 7)
         {
             immersedSpheroids::entryError
             (
                 dict, "collisionPairs",
                 "a record has " + std::to_string(r.size()) + " entries; allowed:"
-                " 11 (first second warm dx dy dz contactTime springForce"
-                " stiffness overlap age), 10 (without age) or 7 (without the"
-                " last four)"
+                " 10 (first second warm dx dy dz contactTime springForce"
+                " stiffness overlap) or 7 (without the last three)"
             );
         }
         collision::PairRecord p;
@@ -572,15 +583,11 @@ void Foam::collisionModels::contact::readHistory(const dictionary& dict)
         p.warm = r[2] > 0.5;
         p.direction = collision::Vec3(r[3], r[4], r[5]);
         p.contactTime = r[6];
-        if (r.size() >= 10)
+        if (r.size() == 10)
         {
             p.springForce = r[7];
             p.stiffness = r[8];
             p.overlap = r[9];
-        }
-        if (r.size() == 11)
-        {
-            p.age = r[10];
         }
         history.push_back(p);
     }
@@ -598,15 +605,15 @@ void Foam::collisionModels::contact::readHistory(const dictionary& dict)
 void Foam::collisionModels::contact::writeHistory(Ostream& os) const
 {
     const std::vector<collision::PairRecord> history = model_.history();
-    List<FixedList<scalar, 11>> records(label(history.size()));
+    List<FixedList<scalar, 10>> records(label(history.size()));
     forAll(records, i)
     {
         const collision::PairRecord& p = history[i];
-        records[i] = FixedList<scalar, 11>
+        records[i] = FixedList<scalar, 10>
         ({
             scalar(p.first), scalar(p.second), p.warm ? 1.0 : 0.0,
             p.direction.x(), p.direction.y(), p.direction.z(), p.contactTime,
-            p.springForce, p.stiffness, p.overlap, p.age
+            p.springForce, p.stiffness, p.overlap
         });
     }
     os.writeEntry("collisionPairs", records);

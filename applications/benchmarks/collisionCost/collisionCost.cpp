@@ -24,6 +24,9 @@
  * Timed per round (interleaved, so that the load of the shared machine hits all alike; the
  * thread's CPU time around each call, its wall time beside it; medians over the rounds):
  *   warm        CollisionModel::forces with the history of the previous call (previous state);
+ *   damping     CollisionModel::dampingForces on the pairs the warm call recorded (the implicit
+ *               lubrication solve of a sub-step, the bodies' velocities as end velocities;
+ *               lubricationContact; no film pairs: the scene has no mesh);
  *   cold        the same on another model, clearHistory() just before the call (timed apart);
  *   stages      steps 1-3 of forces() replicated one after the other (StagedReplica), each timed
  *               on its own: setup (bounding spheres, grown bodies), PairSearch::find, the Jia
@@ -466,12 +469,14 @@ struct Timings {
   std::vector<double> warm, cold, naive, warmWall, coldWall, naiveWall, clearHistory;
   std::vector<double> setup, search, prefilter, distancesCold, distancesWarm, restCold, restWarm;
   std::vector<double> spheres, naiveDistances, perQueryCold, perQueryWarm, perQueryNaive;
+  std::vector<double> damping;  ///< dampingForces after the warm call (lubricationContact)
 };
 
 /// Sums over the timed rounds.
 struct Counts {
   long candidates = 0, rejected = 0, boxRejected = 0, queries = 0, coldIterations = 0, warmIterations = 0,
-       coldNotConverged = 0, warmNotConverged = 0, contacts = 0, lubricated = 0;
+       coldNotConverged = 0, warmNotConverged = 0, contacts = 0, lubricated = 0, damped = 0,
+       dampingSweeps = 0;
   PeerStatistics peer;
 };
 
@@ -485,7 +490,7 @@ const char* kColumns =
     "naiveOverCold,naiveOverWarm,coldOverWarm,naiveOverPipelineCold,naiveOverPipelineWarm,"
     "coldUsPerQuery,warmUsPerQuery,naiveUsPerQuery,"
     "candidatePairs,prefilterRejected,boxRejected,distanceQueries,coldMeanIterations,warmMeanIterations,"
-    "coldNotConverged,warmNotConverged,contacts,lubricated,"
+    "coldNotConverged,warmNotConverged,contacts,lubricated,dampingUs,dampedPairs,dampingSweeps,"
     "naivePairsTested,naiveSphereOverlaps,naiveQueries,naiveMeanIterations,naiveNotConverged\n";
 
 /// One (Ar, mode): warm-up rounds, then the timed rounds, interleaved.
@@ -497,7 +502,7 @@ void measure(Scene& scene, CollisionMode mode, int warmupRounds, int rounds, Tim
   const ellipsoids::DualNewton dual;
   Spheres sp;
   std::vector<std::pair<int, int>> overlapping;
-  std::vector<Vec3> force, torque;
+  std::vector<Vec3> force, torque, endVelocity, endAngularVelocity;
   volatile Scalar sink = 0;
   scene.next = 0;
   for (int r = 0; r < warmupRounds + rounds; ++r) {
@@ -510,6 +515,23 @@ void measure(Scene& scene, CollisionMode mode, int warmupRounds, int rounds, Tim
     const double wc1 = cpuNow();
     const auto w1 = clock::now();
     const collision::CollisionStatistics ws = warmModel.statistics();
+
+    // the implicit damping solve of the pairs the warm call recorded, with
+    // the bodies' velocities as the end velocities of the sub-step
+    double dampingSeconds = 0;
+    if (!warmModel.dampedPairs().empty()) {
+      endVelocity.resize(bodies.size());
+      endAngularVelocity.resize(bodies.size());
+      for (std::size_t i = 0; i < bodies.size(); ++i) {
+        endVelocity[i] = bodies[i].velocity;
+        endAngularVelocity[i] = bodies[i].angularVelocity;
+      }
+      const double d0 = cpuNow();
+      warmModel.dampingForces(bodies, endVelocity, endAngularVelocity, {}, {}, kSubDt, force, torque);
+      dampingSeconds = cpuNow() - d0;
+    }
+    const long damped = long(warmModel.dampedPairs().size());
+    const long dampingSweeps = warmModel.statistics().dampingSweeps;
 
     const double h0 = cpuNow();
     coldModel.clearHistory();
@@ -548,6 +570,9 @@ void measure(Scene& scene, CollisionMode mode, int warmupRounds, int rounds, Tim
     }
     if (r < warmupRounds) continue;
     tm.warm.push_back(wc1 - wc0);
+    if (damped > 0) tm.damping.push_back(dampingSeconds);
+    n.damped += damped;
+    n.dampingSweeps += dampingSweeps;
     tm.cold.push_back(cc1 - cc0);
     tm.naive.push_back(nc1 - nc0);
     tm.clearHistory.push_back(h1 - h0);
@@ -642,7 +667,8 @@ void runTable(const TableOptions& t) {
         << n.candidates / R << ',' << n.rejected / R << ',' << n.boxRejected / R << ',' << n.queries / R << ','
         << ratio(n.coldIterations, n.queries) << ',' << ratio(n.warmIterations, n.queries) << ','
         << n.coldNotConverged << ',' << n.warmNotConverged << ','
-        << n.contacts / R << ',' << n.lubricated / R << ','
+        << n.contacts / R << ',' << n.lubricated / R << ',' << med(tm.damping) << ','
+        << n.damped / R << ',' << ratio(n.dampingSweeps, long(tm.damping.size())) << ','
         << n.peer.pairsTested / R << ',' << n.peer.sphereOverlaps / R << ',' << naiveQueries << ','
         << ratio(n.peer.iterations, n.peer.queries) << ',' << n.peer.notConverged << '\n';
       f.flush();

@@ -107,6 +107,15 @@ def tables(rows):
                 r["warmNotConverged"], r["contacts"], r["lubricated"], r["coldUsPerQuery"],
                 r["warmUsPerQuery"], r["naiveQueries"], r["naiveMeanIterations"],
                 r["naiveUsPerQuery"], r["naiveNotConverged"]))
+        if any(r.get("dampedPairs", 0) > 0 for r in rs):
+            out += ["", "The implicit damping solve (dampingForces, once per sub-step after the "
+                    "Heun evaluations; its Gauss-Seidel sweeps over the damped pairs):", "",
+                    "| Ar | damped pairs | sweeps | time (ms, median) | share of a warm call |",
+                    "|---|---|---|---|---|"]
+            for r in rs:
+                out.append("| %s | %.1f | %.1f | %s | %.1f %% |" % (
+                    r["aspectRatio"], r["dampedPairs"], r["dampingSweeps"], ms(r["dampingUs"]),
+                    100 * r["dampingUs"] / r["warmUs"] if r["warmUs"] > 0 else 0))
         out.append("")
     return "\n".join(out) + "\n"
 

@@ -9,7 +9,7 @@ from constant/immersedBodiesProperties. The surface gap between the two bodies a
 time comes from the project's `ellipsoidDistance` (dual method, 1e-6 of the equal-volume radius),
 so the script needs the project's environment (etc/bashrc). Reported: the largest settling speed
 of each body, the closest approach (gap and time), when the trailing body passes the leading
-one (drafting-kissing-tumbling), when each body first touches the bottom, the wall and CPU time
+one while both fall (drafting-kissing-tumbling), when each body first touches the bottom, the wall and CPU time
 of the solver. Needs Debian's python3-h5py, python3-numpy and python3-matplotlib
 (/usr/bin/python3).
 """
@@ -107,7 +107,10 @@ def main():
     rows += [("gap between the bodies at the start", f"{gap[0] / D:.2f} D"),
              ("closest approach (gap)", f"{gap[kmin] / D:.4f} D at t = {t[kmin]:.3f} s"),
              ("gap below 0.1 D (kissing) from", first_time(t, gap < 0.1 * D)),
-             (f"{names[1]} passes {names[0]} (tumbling) at", first_time(t, dz < 0)),
+             # while both are still off the bottom: bodies resting side by side
+             # on it are at the same height (their centres may cross by a hair)
+             (f"{names[1]} passes {names[0]} (tumbling) at",
+              first_time(t, (dz < 0) & np.all(above > 0, axis=1))),
              ("tilt from the vertical at the closest approach",
               f"{tilt_degrees(q[kmin, 0]):.0f} / {tilt_degrees(q[kmin, 1]):.0f} deg")]
     for b, name in enumerate(names):

@@ -316,6 +316,22 @@ void Foam::collisionModels::contact::convert
 }
 
 
+void Foam::collisionModels::contact::copyOut
+(
+    vectorField& force,
+    vectorField& torque
+) const
+{
+    force.setSize(label(force_.size()));
+    torque.setSize(label(torque_.size()));
+    forAll(force, i)
+    {
+        force[i] = toFoam(force_[i]);
+        torque[i] = toFoam(torque_[i]);
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::collisionModels::contact::contact
@@ -441,13 +457,7 @@ void Foam::collisionModels::contact::forces
             << err.what() << nl << exit(FatalError);
     }
     ++calls_;
-    force.setSize(bodies.size());
-    torque.setSize(bodies.size());
-    forAll(bodies, i)
-    {
-        force[i] = toFoam(force_[i]);
-        torque[i] = toFoam(torque_[i]);
-    }
+    copyOut(force, torque);
 }
 
 
@@ -488,13 +498,7 @@ void Foam::collisionModels::contact::dampingForces
             << "Damping forces at time " << mesh_.time().value() << ": "
             << err.what() << nl << exit(FatalError);
     }
-    force.setSize(bodies.size());
-    torque.setSize(bodies.size());
-    forAll(bodies, i)
-    {
-        force[i] = toFoam(force_[i]);
-        torque[i] = toFoam(torque_[i]);
-    }
+    copyOut(force, torque);
 }
 
 

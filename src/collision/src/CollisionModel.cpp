@@ -101,6 +101,7 @@ std::vector<PairRecord> CollisionModel::history() const {
     r.springForce = c.springForce;
     r.stiffness = c.stiffness;
     r.overlap = c.overlap;
+    r.contactForce = c.force;
   }
   std::vector<PairRecord> out;
   out.reserve(merged.size());
@@ -123,12 +124,14 @@ void CollisionModel::setHistory(const std::vector<PairRecord>& records) {
     require(!r.warm || (r.direction.allFinite() && r.direction.norm() > 0),
             "pair history " + pair + ": the warm-start direction must be finite and non-zero");
     require(std::isfinite(r.springForce) && r.springForce >= 0 && std::isfinite(r.stiffness) &&
-                r.stiffness >= 0 && std::isfinite(r.overlap) && r.overlap >= 0,
-            "pair history " + pair + ": spring force, stiffness and overlap must be finite and >= 0");
+                r.stiffness >= 0 && std::isfinite(r.overlap) && r.overlap >= 0 &&
+                r.contactForce.allFinite(),
+            "pair history " + pair +
+                ": spring force, stiffness and overlap must be finite and >= 0, the contact force finite");
     if (r.warm) direction_[key(r.first, r.second)] = r.direction;
     if (r.contactTime > 0) {
       contact_[key(r.first, r.second)] =
-          ContactState{r.contactTime, r.springForce, r.stiffness, r.overlap, Vec3::Zero()};
+          ContactState{r.contactTime, r.springForce, r.stiffness, r.overlap, r.contactForce};
     }
   }
 }
@@ -173,6 +176,14 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
   torque.assign(n, Vec3::Zero());
   recordDamping_ = recordDamping;
   if (recordDamping) damped_.clear();
+  // each body's contact forces of the last call, from the pairs' (restart-safe)
+  lastContactForce_.assign(n, Vec3::Zero());
+  for (const auto& [k, c] : contact_) {
+    const int i = static_cast<int>(static_cast<std::uint32_t>(k >> 32));
+    const int j = static_cast<int>(static_cast<std::uint32_t>(k & 0xffffffffu));
+    if (i < n) lastContactForce_[i] -= c.force;
+    if (j >= 0 && j < n) lastContactForce_[j] += c.force;
+  }
   if (settings_.mode == CollisionMode::none) return;
   const bool lubrication = settings_.mode == CollisionMode::lubricationContact;
   const bool films = filmsOn();
@@ -262,7 +273,6 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
 
   direction_.swap(nextDirection_);
   contact_.swap(nextContact_);
-  lastContactForce_ = force;  // contact forces only: the damping is added by dampingForces()
   for (int i = 0; i < n; ++i) {
     if (!force[i].allFinite() || !torque[i].allFinite()) {
       throw std::runtime_error("collision: non-finite collision force on body " + std::to_string(i));
@@ -274,7 +284,6 @@ Scalar CollisionModel::sustainedLoad(const std::vector<CollisionBody>& bodies, i
                                      const Vec3& n, const Vec3& ownForce) const {
   // the acceleration of a body from everything but this pair's contact
   // (ownForce: this pair's last force on the second body, minus on the first)
-  const bool known = lastContactForce_.size() == bodies.size();
   auto acceleration = [&](int b, const Vec3& own, Scalar& inverseMass) -> Vec3 {
     if (b < 0 || !bodies[b].movable || !std::isfinite(bodies[b].mass)) {
       inverseMass = 0;
@@ -282,7 +291,7 @@ Scalar CollisionModel::sustainedLoad(const std::vector<CollisionBody>& bodies, i
     }
     inverseMass = 1 / bodies[b].mass;
     Vec3 f = bodies[b].externalForce;
-    if (known) f += lastContactForce_[b] - own;
+    f += lastContactForce_[b] - own;
     return f * inverseMass;
   };
   Scalar w1 = 0, w2 = 0;

@@ -192,6 +192,8 @@ struct PairRecord {
   Scalar springForce = 0;
   Scalar stiffness = 0;
   Scalar overlap = 0;
+  /// the contact force on second in the last call (the load rule's other contacts)
+  Vec3 contactForce = Vec3::Zero();
 };
 
 class CollisionModel {
@@ -311,7 +313,8 @@ class CollisionModel {
   CollisionStatistics statistics_;
   bool recordDamping_ = true;
   std::vector<DampedPair> damped_;
-  /// each body's contact forces of the last call (the load of its other contacts)
+  /// each body's contact forces of the last call (the load of its other
+  /// contacts), summed from contact_ at the start of a call
   std::vector<Vec3> lastContactForce_;
   std::vector<Scalar> impulse_;  ///< dampingForces(): the pairs' normal impulses
   std::vector<Scalar> pairInverseMass_, pairReferenceSpeed_;  ///< dampingForces() scratch

@@ -559,26 +559,28 @@ void Foam::collisionModels::contact::report(const label nSubSteps)
 
 void Foam::collisionModels::contact::readHistory(const dictionary& dict)
 {
-    // (first second warm dx dy dz contactTime springForce stiffness overlap);
-    // the 7-entry form of earlier versions starts the spring from k delta
+    // (first second warm dx dy dz contactTime springForce stiffness overlap
+    // fx fy fz); the 10-entry form of earlier versions has no contact force
+    // (zero), the 7-entry form starts the spring from k delta
     const List<scalarList> records =
         immersedSpheroids::readCheckedOrDefault<List<scalarList>>
         (
             dict, "collisionPairs", List<scalarList>(),
             "a list of (first second warm dx dy dz contactTime springForce"
-            " stiffness overlap)"
+            " stiffness overlap fx fy fz)"
         );
     std::vector<collision::PairRecord> history;
     for (const scalarList& r : records)
     {
-        if (r.size() != 10 && r.size() != 7)
+        if (r.size() != 13 && r.size() != 10 && r.size() != 7)
         {
             immersedSpheroids::entryError
             (
                 dict, "collisionPairs",
                 "a record has " + std::to_string(r.size()) + " entries; allowed:"
-                " 10 (first second warm dx dy dz contactTime springForce"
-                " stiffness overlap) or 7 (without the last three)"
+                " 13 (first second warm dx dy dz contactTime springForce"
+                " stiffness overlap fx fy fz), 10 (without the contact force)"
+                " or 7 (without the last six)"
             );
         }
         collision::PairRecord p;
@@ -587,11 +589,15 @@ void Foam::collisionModels::contact::readHistory(const dictionary& dict)
         p.warm = r[2] > 0.5;
         p.direction = collision::Vec3(r[3], r[4], r[5]);
         p.contactTime = r[6];
-        if (r.size() == 10)
+        if (r.size() >= 10)
         {
             p.springForce = r[7];
             p.stiffness = r[8];
             p.overlap = r[9];
+        }
+        if (r.size() == 13)
+        {
+            p.contactForce = collision::Vec3(r[10], r[11], r[12]);
         }
         history.push_back(p);
     }
@@ -609,15 +615,16 @@ void Foam::collisionModels::contact::readHistory(const dictionary& dict)
 void Foam::collisionModels::contact::writeHistory(Ostream& os) const
 {
     const std::vector<collision::PairRecord> history = model_.history();
-    List<FixedList<scalar, 10>> records(label(history.size()));
+    List<FixedList<scalar, 13>> records(label(history.size()));
     forAll(records, i)
     {
         const collision::PairRecord& p = history[i];
-        records[i] = FixedList<scalar, 10>
+        records[i] = FixedList<scalar, 13>
         ({
             scalar(p.first), scalar(p.second), p.warm ? 1.0 : 0.0,
             p.direction.x(), p.direction.y(), p.direction.z(), p.contactTime,
-            p.springForce, p.stiffness, p.overlap
+            p.springForce, p.stiffness, p.overlap,
+            p.contactForce.x(), p.contactForce.y(), p.contactForce.z()
         });
     }
     os.writeEntry("collisionPairs", records);

@@ -268,7 +268,7 @@ def do_plot():
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
 
-    fig, ax = plt.subplots(figsize=(6, 4))
+    fig, ax = plt.subplots(figsize=(9, 4))
     st = np.logspace(0.7, 3.2, 200)
     ax.semilogx(st, np.exp(-35 / st), "k-", label="exp(-35/St) (Legendre et al.)")
     for cpd, ov in sorted({(int(r["cpd"]), r["maxOverlap"]) for r in rows}):
@@ -282,10 +282,10 @@ def do_plot():
     ax.set_ylabel("e / e_dry")
     ax.set_ylim(0, 1.05)
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend()
+    ax.legend(fontsize=8, loc="center left", bbox_to_anchor=(1.01, 0.5))
     ax.set_title("Sphere-wall rebound in a viscous fluid (Gondret et al. 2002 cases)")
     fig.tight_layout()
-    fig.savefig(os.path.join(RESULTS, "restitution.png"), dpi=120)
+    fig.savefig(os.path.join(RESULTS, "restitution.png"), dpi=120, bbox_inches="tight")
 
     fig, ax = plt.subplots(figsize=(6, 4))
     for r in sorted(rows, key=lambda r: float(r["St_case"])):

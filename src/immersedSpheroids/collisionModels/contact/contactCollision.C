@@ -219,6 +219,23 @@ vector toFoam(const collision::Vec3& v)
         dict, "filmStabilisation", true,
         "yes or no (default yes): the film correction for the pairs closer than filmGap"
     );
+    if (!s.filmStabilisation && dict.found("filmGap"))
+    {
+        entryError
+        (
+            dict, "filmGap",
+            "is used only with filmStabilisation yes (it is no here); remove it"
+        );
+    }
+    if (!lubrication && !s.filmStabilisation && dict.found("viscosity"))
+    {
+        entryError
+        (
+            dict, "viscosity",
+            "is used only by type lubricationContact or by filmStabilisation"
+            " yes (here type contact, filmStabilisation no); remove it"
+        );
+    }
     if (lubrication || s.filmStabilisation)
     {
         s.viscosity = readViscosity(dict, mesh, fluidDensity);

@@ -182,13 +182,15 @@ def bed(case):
              ("n (Rowe 1987)", f"{n_rowe:.3f}"),
              ("n (Khan & Richardson 1989, no wall term)", f"{n_kr:.3f}")]
     if fit:
-        rows += [("n measured (slope through u_t)", f"{fit['origin']:.3f}"),
+        rows += [("n measured (slope through u_t), against Rowe",
+                  f"{fit['origin']:.3f}, {100 * (fit['origin'] / n_rowe - 1):+.1f} %"),
                  ("n measured (free fit), u_i/u_t", f"{fit['free'][0]:.3f}, "
                                                     f"{fit['free'][1]:.3f}")]
     contacts = contacts_per_stage(case, stages, T)
     for i, (s, e, sd, h) in enumerate(means):
         rows.append((f"stage U/u_t = {s:g}: voidage (mean +- sd), bed height",
-                     f"{e:.4f} +- {sd:.4f} (RZ Rowe {s ** (1 / n_rowe):.4f}, KR "
+                     f"{e:.4f} +- {sd:.4f} (RZ Rowe {s ** (1 / n_rowe):.4f}, "
+                     f"{100 * (e / s ** (1 / n_rowe) - 1):+.1f} %; KR "
                      f"{s ** (1 / n_kr):.4f}), H = {h / D:.2f} D"))
         if contacts and contacts[i] is not None:
             rows.append((f"stage U/u_t = {s:g}: contacts (pairs and walls, mean)",

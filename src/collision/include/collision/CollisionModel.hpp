@@ -60,8 +60,9 @@
  *     the bodies' velocities at the start of its time step. Where the fluid
  *     between two surfaces is thinner than a cell that force damps their
  *     relative normal motion with a coefficient D far beyond m/dt (the squeeze
- *     film on the grid: measured D = 0.033 kg/s, D dt/m = 2, for a 4 mm
- *     spheroid lying on a wall in oil of 0.07 Pa s at 6 cells per diameter),
+ *     film on the grid: D dt/m about 2, fitted by hand to the force and
+ *     velocity of a 4 mm spheroid lying on a wall in oil of 0.07 Pa s at 6
+ *     cells per diameter, tests/foam/restingOnWallCase),
  *     and a damping that lags by a step makes the body oscillate with growing
  *     amplitude. For the pairs closer than filmGap (the cell size) forces()
  *     records the estimate D = 6 pi mu R^2 / max(h, filmGap/4) (R the Gaussian

@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "immersedBodies.H"
+#include "wallPolyPatch.H"
 #include "processCpuTime.H"
 #include "cellSolidFraction.H"
 #include "dictionaryChecks.H"
@@ -230,6 +231,8 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     ddtScheme_(immersedSpheroids::ddtCoefficients::scheme::Euler),
     solveDdt_(),
     cellsFound_(false),
+    softWallCells_(true),
+    wallCell_(mesh.nCells(), false),
     cellSlot_(mesh.nCells(), -1),
     updateCpu_(0),
     penaltyCpu_(0)
@@ -241,8 +244,8 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         properties_,
         wordList
         ({
-            "fluidDensity", "U", "penaltyRatio", "subSteps", "virtualMass", "bodies",
-            "packing", "output", "collision"
+            "fluidDensity", "U", "penaltyRatio", "wallCellPenalty", "subSteps",
+            "virtualMass", "bodies", "packing", "output", "collision"
         })
     );
     fluidDensity_ = readPositive
@@ -267,6 +270,35 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
           + Foam::name(penaltyRatio_)
         );
     }
+    const word wallCellPenalty = readCheckedOrDefault<word>
+    (
+        properties_, "wallCellPenalty", "soft",
+        "soft or stiff (default soft): the penalty time scale in the cells on"
+        " a wall patch"
+    );
+    if (wallCellPenalty != "soft" && wallCellPenalty != "stiff")
+    {
+        entryError
+        (
+            properties_, "wallCellPenalty",
+            "must be soft (the default: eta at least the fluid's own time scale"
+            " in the cells on a wall patch) or stiff (eta everywhere), got "
+          + wallCellPenalty
+        );
+    }
+    softWallCells_ = (wallCellPenalty == "soft");
+    forAll(mesh.boundaryMesh(), patchi)
+    {
+        const polyPatch& pp = mesh.boundaryMesh()[patchi];
+        if (isA<wallPolyPatch>(pp))
+        {
+            for (const label celli : pp.faceCells())
+            {
+                wallCell_[celli] = true;
+            }
+        }
+    }
+
     subSteps_ = readCheckedOrDefault<label>
     (
         properties_, "subSteps", 1, "the number of body sub-steps per time step, >= 1"
@@ -327,6 +359,7 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     {
         Info<< ", virtual mass C_v " << virtualMass_;
     }
+    Info<< ", wall cells " << (softWallCells_ ? "soft" : "stiff");
     if (mag(g_) > 0)
     {
         Info<< ", g " << g_;

@@ -58,7 +58,7 @@ CASES = {
     "St742": (742, 788, 920.0, 0.005, 5e-3),
 }
 
-FIELDS = ["name", "St_case", "cpd", "maxOverlap", "cells", "dt", "steps", "U_release", "U_in", "U_out", "e",
+FIELDS = ["name", "St_case", "cpd", "maxOverlap", "saturation", "cells", "dt", "steps", "U_release", "U_in", "U_out", "e",
           "e_spring",
           "St", "e_over_edry", "master", "max_overlap_a", "J_coll", "J_hydro", "J_gravity", "J_hydro_out", "suction", "wall_s", "cpu_s", "host", "date",
           "commit"]
@@ -85,7 +85,7 @@ def sub(path, pattern, repl):
         f.write(s2)
 
 
-def write_case(case, name, cpd, end_factor=1.0, max_overlap=None):
+def write_case(case, name, cpd, end_factor=1.0, max_overlap=None, saturation=None):
     st, re_, rho_f, mu, d = CASES[name]
     a = d / 2
     u = 9 * st * mu / (RHO_P * d)
@@ -122,6 +122,9 @@ def write_case(case, name, cpd, end_factor=1.0, max_overlap=None):
     if max_overlap is not None:
         sub(p, r"^    restitution     0.97;$",
             f"    restitution     0.97;\n    maxOverlap      {max_overlap:g};")
+    if saturation is not None:
+        sub(p, r"^    restitution     0.97;$",
+            f"    restitution     0.97;\n    saturation      {saturation:g};")
     return dict(dt=dt, cells=nx * nx * nz, U_release=u, end=end)
 
 
@@ -195,15 +198,16 @@ def write_rows(path, fields, rows):
         wr.writerows(rows)
 
 
-def run_one(name, cpd, force, quick, max_overlap=None):
+def run_one(name, cpd, force, quick, max_overlap=None, saturation=None):
     out_csv = os.path.join(RESULTS, "quick.csv") if quick else RUNS_CSV
-    tag = f"{name}-c{cpd}" + (f"-ov{max_overlap:g}" if max_overlap is not None else "")
+    tag = (f"{name}-c{cpd}" + (f"-ov{max_overlap:g}" if max_overlap is not None else "")
+           + (f"-sat{saturation:g}" if saturation is not None else ""))
     rows = read_csv(out_csv)
     if not force and not quick and any(r["name"] == tag for r in rows):
         print(f"{tag}: in {os.path.relpath(out_csv, HERE)}, skipped")
         return
     case = os.path.join(HERE, "run", tag)
-    info = write_case(case, name, cpd, max_overlap=max_overlap)
+    info = write_case(case, name, cpd, max_overlap=max_overlap, saturation=saturation)
     print(f"{tag}: {info['cells']} cells, dt {info['dt']:.3g} s, end {info['end']:.3g} s", flush=True)
     start = time.time()
     with open(os.path.join(case, "log.Allrun"), "w") as log:
@@ -219,7 +223,8 @@ def run_one(name, cpd, force, quick, max_overlap=None):
     r = analyse(h5, name)
     master = math.exp(-35 / r["St"])
     row = dict(name=tag, St_case=CASES[name][0], cpd=cpd,
-               maxOverlap=f"{max_overlap if max_overlap is not None else 0.1:g}", cells=info["cells"],
+               maxOverlap=f"{max_overlap if max_overlap is not None else 0.1:g}",
+               saturation=f"{saturation if saturation is not None else 1e-3:g}", cells=info["cells"],
                dt=f"{info['dt']:.6g}", steps=len(r["t"]) - 1, U_release=f"{info['U_release']:.5g}",
                wall_s=round(wall), cpu_s=round(float(cpu[-1])) if cpu else "",
                host=socket.gethostname(), date=time.strftime("%Y-%m-%d %H:%M"),
@@ -246,17 +251,20 @@ def do_plot():
     rows = read_csv(RUNS_CSV)
     if not rows:
         sys.exit("wetRebound: no runs in results/runs.csv")
-    lines = ["| case | cells/d | maxOverlap | U_in [m/s] | St | e | e/e_dry | exp(-35/St) | error | "
+    lines = ["| case | cells/d | maxOverlap | saturation | U_in [m/s] | St | e | e/e_dry | exp(-35/St) | error | "
              "e_spring/e_dry | J_coll | J_hydro | J_gravity | J_hydro_out | suction | "
              "max overlap/a | wall |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         r.setdefault("maxOverlap", "")
         r["maxOverlap"] = r["maxOverlap"] or "0.1"
-    rows.sort(key=lambda r: (int(r["cpd"]), -float(r["maxOverlap"]), float(r["St_case"])))
+        r["saturation"] = r.get("saturation") or "0.001"
+    rows.sort(key=lambda r: (int(r["cpd"]), -float(r["maxOverlap"]), -float(r["saturation"]),
+                             float(r["St_case"])))
     for r in rows:
         err = float(r["e_over_edry"]) - float(r["master"])
         lines.append(f"| St {r['St_case']} (Gondret) | {r['cpd']} | {r['maxOverlap']} | "
+                     f"{r['saturation']} | "
                      f"{float(r['U_in']):.3f} | "
                      f"{float(r['St']):.0f} | {float(r['e']):.3f} | {float(r['e_over_edry']):.3f} | "
                      f"{float(r['master']):.3f} | {err:+.3f} | {float(r['e_spring']) / E_DRY:.3f} | "
@@ -271,9 +279,10 @@ def do_plot():
     fig, ax = plt.subplots(figsize=(9, 4))
     st = np.logspace(0.7, 3.2, 200)
     ax.semilogx(st, np.exp(-35 / st), "k-", label="exp(-35/St) (Legendre et al.)")
-    for cpd, ov in sorted({(int(r["cpd"]), r["maxOverlap"]) for r in rows}):
-        sel = [r for r in rows if int(r["cpd"]) == cpd and r["maxOverlap"] == ov]
-        what = f"{cpd} cells/d, maxOverlap {ov}"
+    for cpd, ov, sat in sorted({(int(r["cpd"]), r["maxOverlap"], r["saturation"]) for r in rows}):
+        sel = [r for r in rows
+               if int(r["cpd"]) == cpd and r["maxOverlap"] == ov and r["saturation"] == sat]
+        what = f"{cpd} cells/d, maxOverlap {ov}" + (f", saturation {sat}" if sat != "0.001" else "")
         ax.semilogx([float(r["St"]) for r in sel], [float(r["e_over_edry"]) for r in sel], "o",
                     label=f"after leaving the wall, {what}")
         ax.semilogx([float(r["St"]) for r in sel], [float(r["e_spring"]) / E_DRY for r in sel], "^",
@@ -322,6 +331,8 @@ def main():
     r.add_argument("--cpd", type=int, default=12)
     r.add_argument("--max-overlap", type=float, default=None,
                    help="collision maxOverlap (default: the library's, 0.1); its own rows")
+    r.add_argument("--saturation", type=float, default=None,
+                   help="lubrication saturation gap/R (default: the library's, 1e-3); its own rows")
     r.add_argument("--force", action="store_true")
     r.add_argument("--quick", action="store_true")
     sp.add_parser("plot")
@@ -338,11 +349,13 @@ def main():
         sys.exit(f"wetRebound: --cpd {args.cpd}: allowed 4 to 64 cells per diameter")
     if args.max_overlap is not None and not 0 < args.max_overlap <= 0.5:
         sys.exit(f"wetRebound: --max-overlap {args.max_overlap}: allowed (0, 0.5]")
+    if args.saturation is not None and not 0 < args.saturation < 0.075:
+        sys.exit(f"wetRebound: --saturation {args.saturation}: allowed (0, 0.075)")
     if args.quick:
         run_one("St152", 6, True, True)
         return
     for name in (args.case or sorted(CASES, key=lambda n: CASES[n][0])):
-        run_one(name, args.cpd, args.force, False, args.max_overlap)
+        run_one(name, args.cpd, args.force, False, args.max_overlap, args.saturation)
 
 
 if __name__ == "__main__":

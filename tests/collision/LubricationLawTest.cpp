@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 using namespace collision;
 
@@ -76,4 +79,55 @@ TEST(LubricationLaw, BadParametersNameTheParameterAndRange) {
   p = LubricationParameters();
   p.wallActivation = std::nan("");
   EXPECT_THROW(p.validate(), std::invalid_argument);
+}
+
+namespace {
+// int_{h0}^{h1} c(h) dh by the composite midpoint rule, n panels between
+// each of the kinks of c (contact, saturation and activation gaps)
+Scalar quadrature(Scalar h0, Scalar h1, Scalar a1, Scalar a2, Scalar mu, const LubricationParameters& p,
+                  const std::vector<Scalar>& kinks, int n = 100000) {
+  const Scalar sign = h1 < h0 ? -1 : 1;
+  std::vector<Scalar> x{std::min(h0, h1), std::max(h0, h1)};
+  for (Scalar k : kinks) {
+    if (k > x.front() && k < x.back()) x.push_back(k);
+  }
+  std::sort(x.begin(), x.end());
+  Scalar sum = 0;
+  for (std::size_t j = 0; j + 1 < x.size(); ++j) {
+    const Scalar dh = (x[j + 1] - x[j]) / n;
+    for (int i = 0; i < n; ++i) sum += pairLubricationCoefficient(x[j] + (i + 0.5) * dh, a1, a2, mu, p) * dh;
+  }
+  return sign * sum;
+}
+}  // namespace
+
+TEST(LubricationLaw, TheIntegralOverTheGapMatchesQuadratureAndTheCoefficient) {
+  // the closed form of int c dh against a fine quadrature, for a wall and two
+  // sphere pairs, over paths crossing the saturation and activation gaps and
+  // into contact, both directions; and (I(h, h + dh))/dh -> c(h)
+  LubricationParameters p;
+  const Scalar mu = 0.02, a = 2e-3;
+  const Scalar inf = std::numeric_limits<Scalar>::infinity();
+  for (Scalar a2 : {inf, a, 2.5 * a}) {
+    const Scalar act = (std::isinf(a2) ? p.wallActivation * a : 0.5 * p.pairActivation * (a + a2));
+    const Scalar sat = act / (std::isinf(a2) ? p.wallActivation : p.pairActivation) * p.saturation;
+    for (auto [h0, h1] : {std::pair<Scalar, Scalar>{2 * act, -0.1 * a}, {0.9 * act, 0.5 * sat},
+                          {0.3 * sat, 0.7 * act}, {-0.01 * a, 3 * sat}, {0.5 * act, 0.2 * act}}) {
+      const Scalar exact = pairLubricationIntegral(h0, h1, a, a2, mu, p);
+      const Scalar numeric = quadrature(h0, h1, a, a2, mu, p, {0, sat, act});
+      EXPECT_NEAR(exact, numeric, 1e-6 * std::abs(numeric)) << a2 << " " << h0 << " " << h1;
+      EXPECT_EQ(exact, -pairLubricationIntegral(h1, h0, a, a2, mu, p));
+    }
+    for (Scalar h : {0.5 * sat, 2 * sat, 0.1 * act, 0.9 * act}) {
+      const Scalar dh = 1e-7 * h;
+      EXPECT_NEAR(pairLubricationIntegral(h, h + dh, a, a2, mu, p) / dh,
+                  pairLubricationCoefficient(h + 0.5 * dh, a, a2, mu, p),
+                  1e-6 * pairLubricationCoefficient(h, a, a2, mu, p))
+          << a2 << " " << h;
+    }
+    EXPECT_EQ(pairLubricationIntegral(-0.2 * a, -0.01 * a, a, a2, mu, p), 0) << "none in contact";
+    EXPECT_EQ(pairLubricationIntegral(1.5 * act, 3 * act, a, a2, mu, p), 0) << "none beyond activation";
+  }
+  // the wall form through the pair function with an infinite second radius
+  EXPECT_EQ(pairLubricationIntegral(1e-4, 1e-6, a, inf, mu, p), wallLubricationIntegral(1e-4, 1e-6, a, mu, p));
 }

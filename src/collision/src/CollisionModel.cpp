@@ -261,8 +261,13 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
     if (!bodies[i].movable) continue;
     for (int w = 0; w < static_cast<int>(walls_.size()); ++w) {
       const WallDistance d = wallDistance(bodies[i].shape, walls_[w]);
+      // (a body that may reach the activation gap within the sub-step too)
       const Scalar lubricationReach =
-          lubrication ? settings_.lubrication.wallActivation * bodies[i].shape.maxOfMaxCurvatureRadius() : 0;
+          lubrication ? settings_.lubrication.wallActivation * bodies[i].shape.maxOfMaxCurvatureRadius() +
+                            2 * subDt *
+                                (bodies[i].velocity.norm() +
+                                 bodies[i].angularVelocity.norm() * bodies[i].shape.maxSemiAxis())
+                      : 0;
       if (d.distance > std::max(lubricationReach, films ? bodies[i].filmGap : Scalar(0))) {
         continue;
       }
@@ -398,8 +403,15 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
                         (wall ? 0 : bodies[j].shape.maxOfMaxCurvatureRadius());
   const Scalar reachBound = wall ? settings_.lubrication.wallActivation * rBound
                                  : 0.5 * settings_.lubrication.pairActivation * rBound;
+  // the correction is integrated over the gap path of the sub-step
+  // (dampingForces): a pair enters the solve when its gap may cross the range
+  // [0, activation) within the sub-step (twice the start speed's travel):
+  // approaching from beyond the activation gap, or leaving a contact
+  const Scalar travel = 2 * std::abs(un) * subDt;
   const bool lubricating = settings_.mode == CollisionMode::lubricationContact &&
-                           settings_.viscosity > 0 && gap >= 0 && gap < reachBound;
+                           settings_.viscosity > 0 && gap + travel >= 0 &&
+                           gap - travel < reachBound && (gap >= 0 || un > 0) &&
+                           (gap < reachBound || un < 0);
   const Scalar filmGap = filmsOn() ? std::max(b1.filmGap, wall ? Scalar(0) : bodies[j].filmGap) : 0;
   const bool film = filmGap > 0 && gap < filmGap;
   if (lubricating || film) {
@@ -411,10 +423,14 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
     pair.normal = n;
     pair.arm1 = s1.arm;
     pair.arm2 = s2.arm;
+    pair.gap = gap;
     if (lubricating) {
       pair.lubrication = wall ? wallLubricationCoefficient(gap, r1, settings_.viscosity, settings_.lubrication)
                               : pairLubricationCoefficient(gap, r1, r2, settings_.viscosity,
                                                            settings_.lubrication);
+      pair.lubricated = true;
+      pair.radius1 = r1;
+      pair.radius2 = r2;
       if (pair.lubrication > 0) ++statistics_.lubricated;
     }
     if (film) {
@@ -422,7 +438,7 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
       pair.film = 6 * kPi * settings_.viscosity * r * r / std::max(gap, Scalar(0.25) * filmGap);
       ++statistics_.filmPairs;
     }
-    if (recordDamping_ && (pair.lubrication > 0 || pair.film > 0)) damped_.push_back(pair);
+    if (recordDamping_ && (pair.lubricated || pair.film > 0)) damped_.push_back(pair);
   }
 
   if (f2.squaredNorm() == 0) return;
@@ -432,6 +448,46 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
     force[j] += f2;
     torque[j] += s2.arm.cross(f2);
   }
+}
+
+Scalar CollisionModel::lubricationCoefficientAt(const DampedPair& p, Scalar gap) const {
+  return p.second < 0 ? wallLubricationCoefficient(gap, p.radius1, settings_.viscosity, settings_.lubrication)
+                      : pairLubricationCoefficient(gap, p.radius1, p.radius2, settings_.viscosity,
+                                                   settings_.lubrication);
+}
+
+Scalar CollisionModel::lubricationIntegral(const DampedPair& p, Scalar h0, Scalar h1) const {
+  return p.second < 0
+             ? wallLubricationIntegral(h0, h1, p.radius1, settings_.viscosity, settings_.lubrication)
+             : pairLubricationIntegral(h0, h1, p.radius1, p.radius2, settings_.viscosity,
+                                       settings_.lubrication);
+}
+
+Scalar CollisionModel::lubricatedEndSpeed(const DampedPair& p, Scalar uFree, Scalar wk, Scalar subDt,
+                                          Scalar uRef) {
+  // g(u) = (1 + wk dt D) u + wk I(u) - (uFree + wk dt D uRef) = 0: g increases
+  // with u (I(u) is the integral of c >= 0 up to gap + u dt) and the root lies
+  // between 0 and u0 = rhs/(1 + wk dt D); Newton (g' = 1 + wk dt D +
+  // wk dt c(gap + u dt)) kept inside the bracket by bisection
+  const Scalar a = 1 + wk * subDt * p.film;
+  const Scalar rhs = uFree + wk * subDt * p.film * uRef;
+  if (rhs == 0) return 0;
+  const Scalar u0 = rhs / a;
+  Scalar lo = std::min(Scalar(0), u0), hi = std::max(Scalar(0), u0);
+  auto g = [&](Scalar u) { return a * u + wk * lubricationIntegral(p, p.gap, p.gap + u * subDt) - rhs; };
+  Scalar u = u0;
+  for (int it = 0; it < kMaxLubricationIterations; ++it) {
+    const Scalar gu = g(u);
+    if (gu == 0) return u;
+    if (gu > 0) hi = u; else lo = u;
+    const Scalar slope = a + wk * subDt * lubricationCoefficientAt(p, p.gap + u * subDt);
+    Scalar next = u - gu / slope;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::abs(next - u) <= 1e-14 * std::abs(u0) || hi - lo <= 1e-14 * std::abs(u0)) return next;
+    u = next;
+  }
+  ++statistics_.lubricationNotConverged;
+  return u;
 }
 
 void CollisionModel::dampingForces(const std::vector<CollisionBody>& bodies,
@@ -505,11 +561,19 @@ void CollisionModel::dampingForces(const std::vector<CollisionBody>& bodies,
       if (!(wk[k] > 0)) continue;
       const DampedPair& p = damped_[k];
       // the impulse lambda on the second body along n with
-      // lambda = -subDt [(c + D) u_n(end) - D u_ref], the other pairs'
-      // impulses held: u_n moves by wk per unit impulse
-      const Scalar h = subDt * (p.lubrication + p.film);
-      const Scalar un = normalSpeed(p, v, w);
-      const Scalar target = -(h * (un - wk[k] * impulse_[k]) - subDt * p.film * uRef[k]) / (1 + h * wk[k]);
+      // lambda = -I(u) - subDt D (u - u_ref), u = u_n(end), I(u) the integral
+      // of the lubrication coefficient over the gap path from gap to
+      // gap + u subDt; the other pairs' impulses held: u_n moves by wk per
+      // unit impulse
+      const Scalar uFree = normalSpeed(p, v, w) - wk[k] * impulse_[k];
+      Scalar target;
+      if (p.lubricated) {
+        const Scalar u = lubricatedEndSpeed(p, uFree, wk[k], subDt, uRef[k]);
+        target = -lubricationIntegral(p, p.gap, p.gap + u * subDt) - subDt * p.film * (u - uRef[k]);
+      } else {
+        const Scalar h = subDt * p.film;
+        target = -(h * uFree - subDt * p.film * uRef[k]) / (1 + h * wk[k]);
+      }
       const Scalar change = target - impulse_[k];
       impulse_[k] = target;
       const Vec3 j2 = change * p.normal;  // on the second body; -j2 on the first
@@ -527,6 +591,14 @@ void CollisionModel::dampingForces(const std::vector<CollisionBody>& bodies,
   }
   statistics_.dampingSweeps += sweeps;
   if (!converged) ++statistics_.dampingNotConverged;
+  // the coefficient each lubricated pair received: the mean over its path
+  for (DampedPair& p : damped_) {
+    if (!p.lubricated) continue;
+    const Scalar dh = normalSpeed(p, v, w) * subDt;
+    p.lubricationMean = std::abs(dh) > 1e-12 * (std::abs(p.gap) + p.radius1)
+                            ? lubricationIntegral(p, p.gap, p.gap + dh) / dh
+                            : lubricationCoefficientAt(p, p.gap);
+  }
 
   for (std::size_t k = 0; k < m; ++k) {
     const DampedPair& p = damped_[k];

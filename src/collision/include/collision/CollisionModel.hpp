@@ -167,6 +167,7 @@ struct CollisionStatistics {
   long dampingSolves = 0;         ///< dampingForces() calls with damped pairs
   long dampingSweeps = 0;         ///< Gauss-Seidel sweeps over the pairs in those calls
   long dampingNotConverged = 0;   ///< solves stopped at the sweep limit (last iterate used)
+  long lubricationNotConverged = 0;  ///< a pair's end-speed equation stopped at its iteration limit
   Scalar maxOverlapRatio = 0;     ///< max overlap / smallest semi-axis of the pair
 };
 
@@ -177,8 +178,17 @@ struct DampedPair {
   Vec3 normal = Vec3::Zero();   ///< unit normal from first to second
   Vec3 arm1 = Vec3::Zero();     ///< from the first body's centre to the point between the closest points
   Vec3 arm2 = Vec3::Zero();     ///< the same from the second body's centre (unused for a wall)
-  Scalar lubrication = 0;       ///< c >= 0 (step 5): the force on second -c u_n normal
+  Scalar lubrication = 0;       ///< c >= 0 at the start gap (step 5): the force on second -c u_n normal
   Scalar film = 0;              ///< D >= 0 (step 7): the force on second -D (u_n - u_n,ref) normal
+  /// the lubrication correction applies over this sub-step: its impulse is the
+  /// integral of c over the gap path from gap to gap + u_n(end) subDt
+  bool lubricated = false;
+  Scalar gap = 0;               ///< the surface gap at the start of the sub-step (any sign)
+  Scalar radius1 = 0;           ///< the curvature radii of the lubrication law
+  Scalar radius2 = 0;           ///< (infinite for a wall)
+  /// set by dampingForces(): the mean c over the sub-step's gap path, the
+  /// coefficient the solve applied (-c_mean u_n(end))
+  Scalar lubricationMean = 0;
 };
 
 /// What the model remembers of one pair between calls (the restart state).
@@ -239,12 +249,18 @@ class CollisionModel {
    * be empty). The returned forces, held over the sub-step and acting on the
    * bodies' own masses and inertias (those of bodies), change the end
    * velocities so that every pair k gets
-   *     F_k = -[c_k u_n,k + D_k (u_n,k - u_n,ref,k)] n_k
-   * with u_n,k its relative normal velocity at the end. The system
-   * (M + subDt J^T (C + D) J) is symmetric positive definite; it is solved by
-   * Gauss-Seidel sweeps over the pairs (one sweep is exact for a single pair),
-   * at most kMaxDampingSweeps; a solve stopped there is counted in statistics()
-   * and its last iterate is used.
+   *     F_k subDt = -[I_k(u_n,k) + D_k (u_n,k - u_n,ref,k) subDt] n_k
+   * with u_n,k its relative normal velocity at the end and I_k(u) the integral
+   * of its lubrication coefficient over the gap path from the start gap to
+   * gap + u subDt (for a short path c(gap) u subDt: backward Euler; for a long
+   * one the exact Stokes impulse of the path, so the correction does not
+   * depend on how finely the sub-steps sample the gap; DampedPair::
+   * lubricationMean is the mean coefficient applied). The system is monotone
+   * (M + subDt J^T (C + D) J symmetric positive definite in the linear case);
+   * it is solved by Gauss-Seidel sweeps over the pairs (one sweep is exact for
+   * a single pair, each pair's scalar equation by safeguarded Newton, at most
+   * kMaxLubricationIterations), at most kMaxDampingSweeps; a solve stopped
+   * there is counted in statistics() and its last iterate is used.
    * @throws std::invalid_argument if the sizes differ from bodies
    * @throws std::runtime_error on a non-finite force
    */
@@ -255,6 +271,7 @@ class CollisionModel {
                      std::vector<Vec3>& force, std::vector<Vec3>& torque);
 
   static constexpr int kMaxDampingSweeps = 1000;
+  static constexpr int kMaxLubricationIterations = 200;
   /// stop when no sweep changes a pair's normal velocity by more than this times the largest one
   static constexpr Scalar kDampingTolerance = 1e-10;
 
@@ -284,6 +301,13 @@ class CollisionModel {
     return (std::uint64_t(std::uint32_t(i)) << 32) | std::uint32_t(j);
   }
   /// The interaction of bodies i, j (j < 0: wall -1 - j) at signed gap d.
+  /// the lubrication coefficient of a damped pair at the gap h, and its
+  /// integral over the gap from h0 to h1
+  Scalar lubricationCoefficientAt(const DampedPair& p, Scalar h) const;
+  Scalar lubricationIntegral(const DampedPair& p, Scalar h0, Scalar h1) const;
+  /// the end relative normal speed of one lubricated pair (the others held)
+  Scalar lubricatedEndSpeed(const DampedPair& p, Scalar uFree, Scalar wk, Scalar subDt,
+                            Scalar uRef);
   void interact(const std::vector<CollisionBody>& bodies, int i, int j, Scalar gap,
                 const Vec3& n, const Vec3& p1, const Vec3& p2, Scalar contactTime, Scalar subDt,
                 std::vector<Vec3>& force, std::vector<Vec3>& torque);

@@ -424,13 +424,17 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
     pair.arm1 = s1.arm;
     pair.arm2 = s2.arm;
     pair.gap = gap;
-    if (lubricating) {
-      pair.lubrication = wall ? wallLubricationCoefficient(gap, r1, settings_.viscosity, settings_.lubrication)
-                              : pairLubricationCoefficient(gap, r1, r2, settings_.viscosity,
-                                                           settings_.lubrication);
+    // with the radii known, the activation gap itself: a pair whose gap cannot
+    // reach it within the sub-step has no lubrication to integrate
+    const Scalar activationGap = wall ? settings_.lubrication.wallActivation * r1
+                                      : 0.5 * settings_.lubrication.pairActivation * (r1 + r2);
+    if (lubricating && gap - travel < activationGap) {
       pair.lubricated = true;
       pair.radius1 = r1;
       pair.radius2 = r2;
+      pair.law = LubricationGapLaw(r1, r2, settings_.viscosity, settings_.lubrication);
+      pair.lubrication = pair.law.coefficient(gap);
+      pair.startPrimitive = pair.law.primitive(gap);
       if (pair.lubrication > 0) ++statistics_.lubricated;
     }
     if (film) {
@@ -451,16 +455,11 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
 }
 
 Scalar CollisionModel::lubricationCoefficientAt(const DampedPair& p, Scalar gap) const {
-  return p.second < 0 ? wallLubricationCoefficient(gap, p.radius1, settings_.viscosity, settings_.lubrication)
-                      : pairLubricationCoefficient(gap, p.radius1, p.radius2, settings_.viscosity,
-                                                   settings_.lubrication);
+  return p.law.coefficient(gap);
 }
 
 Scalar CollisionModel::lubricationIntegral(const DampedPair& p, Scalar h0, Scalar h1) const {
-  return p.second < 0
-             ? wallLubricationIntegral(h0, h1, p.radius1, settings_.viscosity, settings_.lubrication)
-             : pairLubricationIntegral(h0, h1, p.radius1, p.radius2, settings_.viscosity,
-                                       settings_.lubrication);
+  return p.law.primitive(h1) - (h0 == p.gap ? p.startPrimitive : p.law.primitive(h0));
 }
 
 Scalar CollisionModel::lubricatedEndSpeed(const DampedPair& p, Scalar uFree, Scalar wk, Scalar subDt,
@@ -475,7 +474,9 @@ Scalar CollisionModel::lubricatedEndSpeed(const DampedPair& p, Scalar uFree, Sca
   const Scalar u0 = rhs / a;
   Scalar lo = std::min(Scalar(0), u0), hi = std::max(Scalar(0), u0);
   auto g = [&](Scalar u) { return a * u + wk * lubricationIntegral(p, p.gap, p.gap + u * subDt) - rhs; };
-  Scalar u = u0;
+  // first guess: backward Euler with the start gap's coefficient (exact for
+  // a path short against the gap, the common case: one or two iterations)
+  Scalar u = rhs / (a + wk * subDt * lubricationCoefficientAt(p, p.gap));
   for (int it = 0; it < kMaxLubricationIterations; ++it) {
     const Scalar gu = g(u);
     if (gu == 0) return u;

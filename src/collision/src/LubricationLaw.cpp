@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -50,16 +51,6 @@ Scalar wallLambdaPrimitive(Scalar eps) {
   return ln - (eps * ln - eps) / 5 - (eps * eps * ln / 2 - eps * eps / 4) / 21 + 0.9713 * eps;
 }
 
-// int_0^x [lambda(max(s, sat)) - lambda(act)] ds for x in [0, act], from the
-// law's lambda and its antiderivative L (0 for x <= 0, constant beyond act)
-template <class Lambda, class Primitive>
-Scalar correctionPrimitive(Scalar x, Scalar sat, Scalar act, Lambda lambda, Primitive L) {
-  if (!(x > 0)) return 0;
-  x = std::min(x, act);
-  const Scalar lambdaAct = lambda(act);
-  if (x <= sat) return (lambda(sat) - lambdaAct) * x;
-  return (lambda(sat) - lambdaAct) * sat + (L(x) - L(sat)) - lambdaAct * (x - sat);
-}
 }  // namespace
 
 Scalar pairLubricationLambda(Scalar xi, Scalar a1, Scalar a2) {
@@ -94,22 +85,57 @@ Scalar wallLubricationCoefficient(Scalar gap, Scalar a, Scalar viscosity,
 
 Scalar pairLubricationIntegral(Scalar h0, Scalar h1, Scalar a1, Scalar a2, Scalar viscosity,
                                const LubricationParameters& p) {
-  if (!std::isfinite(a2)) return wallLubricationIntegral(h0, h1, a1, viscosity, p);
-  const PairTerms t = pairTerms(a1, a2);
-  auto lambda = [&](Scalar xi) { return pairLubricationLambda(xi, a1, a2); };
-  auto L = [&](Scalar xi) { return pairLambdaPrimitive(xi, t); };
-  const Scalar scale = 2 / (a1 + a2);  // xi = scale h
-  auto G = [&](Scalar h) { return correctionPrimitive(scale * h, p.saturation, p.pairActivation, lambda, L); };
-  return 6 * kPi * viscosity * a1 / scale * (G(h1) - G(h0));
+  const LubricationGapLaw law(a1, a2, viscosity, p);
+  return law.primitive(h1) - law.primitive(h0);
 }
 
 Scalar wallLubricationIntegral(Scalar h0, Scalar h1, Scalar a, Scalar viscosity,
                                const LubricationParameters& p) {
-  auto G = [&](Scalar h) {
-    return correctionPrimitive(h / a, p.saturation, p.wallActivation, wallLubricationLambda,
-                               wallLambdaPrimitive);
-  };
-  return 6 * kPi * viscosity * a * a * (G(h1) - G(h0));
+  return pairLubricationIntegral(h0, h1, a, std::numeric_limits<Scalar>::infinity(), viscosity, p);
+}
+
+LubricationGapLaw::LubricationGapLaw(Scalar a1, Scalar a2, Scalar viscosity, const LubricationParameters& p)
+    : wall_(!std::isfinite(a2)), force_(6 * kPi * viscosity * a1), sat_(p.saturation) {
+  if (wall_) {
+    scale_ = 1 / a1;
+    act_ = p.wallActivation;
+  } else {
+    const PairTerms t = pairTerms(a1, a2);
+    A_ = t.A;
+    B_ = t.B;
+    C_ = t.C;
+    scale_ = 2 / (a1 + a2);
+    act_ = p.pairActivation;
+  }
+  lambdaAct_ = lambda(act_);
+  lambdaSat_ = lambda(sat_);
+  primitiveSat_ = lambdaPrimitive(sat_);
+}
+
+Scalar LubricationGapLaw::lambda(Scalar x) const {
+  if (wall_) return wallLubricationLambda(x);
+  const Scalar lnInv = -std::log(x);
+  return A_ / x + B_ * lnInv + C_ * x * lnInv;
+}
+
+Scalar LubricationGapLaw::lambdaPrimitive(Scalar x) const {
+  if (wall_) return wallLambdaPrimitive(x);
+  return pairLambdaPrimitive(x, PairTerms{A_, B_, C_});
+}
+
+Scalar LubricationGapLaw::coefficient(Scalar gap) const {
+  const Scalar x = scale_ * gap;
+  if (!(x < act_) || gap < 0) return 0;
+  return force_ * ((x > sat_ ? lambda(x) : lambdaSat_) - lambdaAct_);
+}
+
+Scalar LubricationGapLaw::primitive(Scalar gap) const {
+  Scalar x = scale_ * gap;
+  if (!(x > 0)) return 0;
+  x = std::min(x, act_);
+  Scalar integral = (lambdaSat_ - lambdaAct_) * std::min(x, sat_);
+  if (x > sat_) integral += lambdaPrimitive(x) - primitiveSat_ - lambdaAct_ * (x - sat_);
+  return force_ / scale_ * integral;
 }
 
 }  // namespace collision

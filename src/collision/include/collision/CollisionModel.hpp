@@ -186,6 +186,8 @@ struct DampedPair {
   Scalar gap = 0;               ///< the surface gap at the start of the sub-step (any sign)
   Scalar radius1 = 0;           ///< the curvature radii of the lubrication law
   Scalar radius2 = 0;           ///< (infinite for a wall)
+  LubricationGapLaw law;        ///< the correction against the gap (lubricated pairs)
+  Scalar startPrimitive = 0;    ///< law.primitive(gap)
   /// set by dampingForces(): the mean c over the sub-step's gap path, the
   /// coefficient the solve applied (-c_mean u_n(end))
   Scalar lubricationMean = 0;

@@ -77,6 +77,31 @@ Scalar wallLubricationCoefficient(Scalar gap, Scalar a, Scalar viscosity,
  */
 Scalar pairLubricationIntegral(Scalar h0, Scalar h1, Scalar a1, Scalar a2, Scalar viscosity,
                                const LubricationParameters& p);
+
+/**
+ * One pair's correction as a function of its gap, with the constants of the
+ * law computed once (the implicit solve evaluates it many times per pair):
+ * coefficient(h) equals pairLubricationCoefficient(h, a1, a2, ...) and
+ * primitive(h1) - primitive(h0) equals pairLubricationIntegral(h0, h1, ...).
+ */
+class LubricationGapLaw {
+ public:
+  LubricationGapLaw() = default;
+  /// a2 = infinity: a sphere of radius a1 and a plane
+  LubricationGapLaw(Scalar a1, Scalar a2, Scalar viscosity, const LubricationParameters& p);
+  Scalar coefficient(Scalar gap) const;
+  /// G(gap) = int_0^gap c(h) dh (0 for gap <= 0, constant beyond the activation gap)
+  Scalar primitive(Scalar gap) const;
+
+ private:
+  Scalar lambda(Scalar x) const;
+  Scalar lambdaPrimitive(Scalar x) const;
+  bool wall_ = true;
+  Scalar A_ = 0, B_ = 0, C_ = 0;  ///< the pair law's terms (pairs)
+  Scalar scale_ = 0;              ///< gap ratio x = scale_ h
+  Scalar force_ = 0;              ///< 6 pi mu a1: c = force_ (lambda(x) - lambda(x_act))
+  Scalar act_ = 0, sat_ = 0, lambdaAct_ = 0, lambdaSat_ = 0, primitiveSat_ = 0;
+};
 Scalar wallLubricationIntegral(Scalar h0, Scalar h1, Scalar a, Scalar viscosity,
                                const LubricationParameters& p);
 

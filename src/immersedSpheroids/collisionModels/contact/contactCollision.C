@@ -561,6 +561,14 @@ void Foam::collisionModels::contact::report(const label nSubSteps)
             << collision::CollisionModel::kMaxDampingSweeps
             << " sweeps; their last iterate was used" << endl;
     }
+    if (st.lubricationNotConverged > 0)
+    {
+        WarningInFunction
+            << st.lubricationNotConverged << " lubricated pairs of this step"
+            << " stopped their end-speed iteration at "
+            << collision::CollisionModel::kMaxLubricationIterations
+            << " iterations; the last iterate was used" << endl;
+    }
     if (st.distanceNotConverged > 0)
     {
         WarningInFunction

@@ -160,6 +160,12 @@ void immersedBodiesTests::testBadInput(const Time& runTime, const fvMesh& mesh)
     }
     expectFatalIOError
     (
+        construct("wallCellPenalty hard; " + withBody(goodBody)),
+        {"'wallCellPenalty'", "soft", "stiff", "hard", fname},
+        "wallCellPenalty not soft or stiff"
+    );
+    expectFatalIOError
+    (
         construct("penaltyRatoi 1e-3; " + withBody(goodBody)),
         {"penaltyRatoi", "Allowed keywords", "penaltyRatio", fname},
         "misspelt top-level keyword"

@@ -302,7 +302,6 @@ class CollisionModel {
   static std::uint64_t key(int i, int j) {
     return (std::uint64_t(std::uint32_t(i)) << 32) | std::uint32_t(j);
   }
-  /// The interaction of bodies i, j (j < 0: wall -1 - j) at signed gap d.
   /// the lubrication coefficient of a damped pair at the gap h, and its
   /// integral over the gap from h0 to h1
   Scalar lubricationCoefficientAt(const DampedPair& p, Scalar h) const;
@@ -310,6 +309,7 @@ class CollisionModel {
   /// the end relative normal speed of one lubricated pair (the others held)
   Scalar lubricatedEndSpeed(const DampedPair& p, Scalar uFree, Scalar wk, Scalar subDt,
                             Scalar uRef);
+  /// The interaction of bodies i, j (j < 0: wall -1 - j) at signed gap d.
   void interact(const std::vector<CollisionBody>& bodies, int i, int j, Scalar gap,
                 const Vec3& n, const Vec3& p1, const Vec3& p2, Scalar contactTime, Scalar subDt,
                 std::vector<Vec3>& force, std::vector<Vec3>& torque);

@@ -71,11 +71,13 @@ Scalar wallLubricationCoefficient(Scalar gap, Scalar a, Scalar viscosity,
  * impulse -I along its normal whatever the time this takes: the correction's
  * logarithm is integrated exactly however coarse the time step (the body
  * sub-steps of a fluid step cross the gap range 1e-3 .. 0.075 a in a few
- * steps, and a coefficient sampled at their start gaps gives about half of
- * it). c(h) as in pair/wallLubricationCoefficient: 0 in contact and beyond
+ * steps, and a coefficient sampled at their start gaps misses most of the
+ * small gaps, where most of the logarithm is). c(h) as in pair/wallLubricationCoefficient: 0 in contact and beyond
  * the activation gap, frozen below the saturation gap.
  */
 Scalar pairLubricationIntegral(Scalar h0, Scalar h1, Scalar a1, Scalar a2, Scalar viscosity,
+                               const LubricationParameters& p);
+Scalar wallLubricationIntegral(Scalar h0, Scalar h1, Scalar a, Scalar viscosity,
                                const LubricationParameters& p);
 
 /**
@@ -102,8 +104,6 @@ class LubricationGapLaw {
   Scalar force_ = 0;              ///< 6 pi mu a1: c = force_ (lambda(x) - lambda(x_act))
   Scalar act_ = 0, sat_ = 0, lambdaAct_ = 0, lambdaSat_ = 0, primitiveSat_ = 0;
 };
-Scalar wallLubricationIntegral(Scalar h0, Scalar h1, Scalar a, Scalar viscosity,
-                               const LubricationParameters& p);
 
 }  // namespace collision
 

@@ -21,10 +21,10 @@ using ellipsoids::Quat;
 using ellipsoids::Scalar;
 using ellipsoids::StopRule;
 using ellipsoids::Vec3;
+using ellipsoids::kPi;
 
 namespace {
 
-constexpr Scalar kPi = 3.14159265358979323846;
 
 struct Pair {
   Ellipsoid e1, e2;

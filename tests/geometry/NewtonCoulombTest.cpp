@@ -20,10 +20,10 @@ using ellipsoids::Quat;
 using ellipsoids::Scalar;
 using ellipsoids::StopRule;
 using ellipsoids::Vec3;
+using ellipsoids::kPi;
 
 namespace {
 
-constexpr Scalar kPi = 3.14159265358979323846;
 
 /// The paper's analytic case (3.2): a spheroid (D_eq = 1) rotated by +pi/4 about
 /// z at (xc, 0, 0) and its mirror image at (-xc, 0, 0), at the exact distance dStar.

@@ -1,6 +1,6 @@
 // dryCollisions: dry collisions in vacuum through the collision core
-// (CollisionModel + the Heun sub-steps of collisionSubStep, the scheme of the
-// OpenFOAM library's free motion), measured against the input restitution and
+// (CollisionModel in the sub-steps of SubStepper and the rigid-body step of
+// RigidBodyStep, the ones coupled runs use), measured against the input restitution and
 // the conservation laws, and pushed to the extremes (README.md).
 //
 //   dryCollisions [--quick] [--out DIR] [--only PART]
@@ -38,7 +38,6 @@ using namespace collision;
 
 namespace {
 
-constexpr Scalar kPi = 3.14159265358979323846;
 constexpr Scalar kInf = std::numeric_limits<Scalar>::infinity();
 constexpr Scalar kDeq = 1;  // length unit
 constexpr Scalar kTc = 1;   // nominal contact time, time unit

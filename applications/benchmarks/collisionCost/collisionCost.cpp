@@ -82,8 +82,8 @@ using collision::CollisionSettings;
 using collision::Scalar;
 using collision::Vec3;
 using collision::Quat;
+using collision::kPi;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kBodies = 1000;
 constexpr double kVolumeFraction = 0.25;
 constexpr double kStep = 1e-3;       ///< displacement per call (D_eq) and rotation (rad)

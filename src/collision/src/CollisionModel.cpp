@@ -9,7 +9,6 @@
 namespace collision {
 
 namespace {
-constexpr Scalar kPi = 3.14159265358979323846;
 constexpr Scalar kInf = std::numeric_limits<Scalar>::infinity();
 
 void require(bool ok, const std::string& what) {
@@ -341,12 +340,10 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
     const Scalar wInv = inverseEffectiveMass(s1, s2, n);
     if (wInv > 0) {
       const Scalar e = settings_.contact.restitution;
-      const Scalar lnE = std::log(e);
       SpringDashpot law;
       if (c.stiffness > 0) {
         // the spring-dashpot of the first touch (a fixed linear oscillator)
-        law.stiffness = c.stiffness;
-        law.damping = -2 * lnE * c.stiffness * c.contactTime / (kPi * kPi + lnE * lnE);
+        law = springDashpotOfStiffness(c.stiffness, e, c.contactTime);
         c.springForce = std::max(Scalar(0), c.springForce + law.stiffness * (overlap - c.overlap));
       } else {
         law = springDashpot(1 / wInv, e, c.contactTime);  // the first touch (or an old restart)

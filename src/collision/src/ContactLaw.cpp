@@ -6,10 +6,6 @@
 
 namespace collision {
 
-namespace {
-constexpr Scalar kPi = 3.14159265358979323846;
-}
-
 void ContactParameters::validate() const {
   if (!(std::isfinite(restitution) && restitution > 0 && restitution <= 1)) {
     throw std::invalid_argument("contact: restitution = " + std::to_string(restitution) +
@@ -36,6 +32,14 @@ SpringDashpot springDashpot(Scalar effectiveMass, Scalar restitution, Scalar con
   SpringDashpot law;
   law.stiffness = effectiveMass * (kPi * kPi + lnE * lnE) / (contactTime * contactTime);
   law.damping = -2 * effectiveMass * lnE / contactTime;
+  return law;
+}
+
+SpringDashpot springDashpotOfStiffness(Scalar stiffness, Scalar restitution, Scalar contactTime) {
+  const Scalar lnE = std::log(restitution);
+  SpringDashpot law;
+  law.stiffness = stiffness;
+  law.damping = -2 * lnE * stiffness * contactTime / (kPi * kPi + lnE * lnE);
   return law;
 }
 

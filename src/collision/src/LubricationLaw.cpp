@@ -9,7 +9,6 @@
 namespace collision {
 
 namespace {
-constexpr Scalar kPi = 3.14159265358979323846;
 
 void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("lubrication: " + what);

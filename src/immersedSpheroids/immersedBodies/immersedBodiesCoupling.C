@@ -10,7 +10,8 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "immersedBodies.H"
-#include "freeMotion.H"
+#include "coupledBodySet.H"
+#include "coreConversions.H"
 #include "processCpuTime.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -116,169 +117,50 @@ void Foam::immersedBodies::computeForces(const volVectorField& U)
 }
 
 
-Foam::Pair<Foam::vector> Foam::immersedBodies::advanceBody
-(
-    const immersedBody& body,
-    bodyState& state,
-    const scalar t,
-    const scalar subDt,
-    const vector& Fc,
-    const vector& Tc
-) const
-{
-    const vector F =
-        body.hydroForce() + (body.density() - fluidDensity_)*body.volume()*g_;
-    const vector& T = body.hydroTorque();
-
-    // virtual-mass stabilisation (Schwarz, Kempe and Froehlich 2015) of the
-    // hydrodynamic force: C_v rho_f V (dU/dt) on both sides, implicit on the
-    // left (mass and inertia scaled by 1 + beta), explicit with the last
-    // sub-step's hydrodynamic acceleration on the right. The collision force
-    // acts on the body's own mass: its impulse is scaled by 1 + beta too.
-    const scalar beta = virtualMass_*fluidDensity_/body.density();
-    const vector U0 = state.velocity;
-    const vector W0 = state.angularVelocity;
-    vector impulse = (F + (1 + beta)*Fc)*subDt;
-    vector angularImpulse = (T + (1 + beta)*Tc)*subDt;
-    if (beta > 0)
-    {
-        impulse += beta*body.mass()*body.acceleration()*subDt;
-        angularImpulse +=
-            beta*subDt
-           *(
-                bodyMotions::worldInertia(state.orientation, body.bodyInertia())
-              & body.angularAcceleration()
-            );
-    }
-
-    body.motion().advance
-    (
-        state,
-        t,
-        subDt,
-        impulse,
-        angularImpulse,
-        (1 + beta)*body.mass(),
-        (1 + beta)*body.bodyInertia()
-    );
-
-    // the hydrodynamic accelerations (without the collision force's)
-    vector a = (state.velocity - U0)/subDt;
-    vector alpha = (state.angularVelocity - W0)/subDt;
-    if (body.motion().isFreeInTranslation())
-    {
-        a -= Fc/body.mass();
-    }
-    if (body.motion().isFreeInRotation())
-    {
-        alpha -=
-            bodyMotions::inverseWorldInertia(state.orientation, body.bodyInertia())
-          & Tc;
-    }
-    return Pair<vector>(a, alpha);
-}
-
-
 void Foam::immersedBodies::advanceBodies(const scalar t0, const scalar dt)
 {
+    using immersedSpheroids::toCore;
+    using immersedSpheroids::toFoam;
+
     const label nBodies = bodies_.size();
+    coupledBodySet set(bodies_, fluidDensity_, g_, virtualMass_, collision_->filmGap());
+    std::vector<collision::BodyState> states(nBodies);
+    forAll(bodies_, i)
+    {
+        states[i] = toCore(bodies_[i].state());
+    }
+
     const bool colliding = collision_->active();
     const label nSub =
-        colliding ? max(subSteps_, collision_->subSteps(bodies_, dt)) : subSteps_;
+        colliding
+      ? max(subSteps_, collision_->subSteps(set, states, dt))
+      : subSteps_;
     const scalar subDt = dt/nSub;
 
-    // collision forces at the start and the predicted end of a sub-step
-    vectorField Fc(nBodies, Zero), Tc(nBodies, Zero);
-    vectorField Fc1, Tc1;
-    vectorField FcMean(nBodies, Zero), TcMean(nBodies, Zero);
-    List<bodyState> states(nBodies), startStates;
-    // the states the hydrodynamic force of this step responded to, and the
-    // bodies' other forces of the step (the load they bring to contacts)
-    List<bodyState> referenceStates;
+    // the states the hydrodynamic force of this step responded to (the
+    // film correction)
+    std::vector<collision::BodyState> referenceStates;
     if (colliding)
     {
-        referenceStates.setSize(nBodies);
-        vectorField external(nBodies);
-        forAll(bodies_, i)
-        {
-            const immersedBody& body = bodies_[i];
-            referenceStates[i] = body.state();
-            external[i] =
-                body.hydroForce()
-              + (body.density() - fluidDensity_)*body.volume()*g_;
-        }
-        collision_->setExternalForces(external);
+        referenceStates = states;
     }
 
+    vectorField Fc, Tc;
+    vectorField FcMean(nBodies, Zero), TcMean(nBodies, Zero);
     for (label stepi = 0; stepi < nSub; ++stepi)
     {
-        const scalar t = t0 + stepi*subDt;
-
-        if (colliding)
-        {
-            // Heun: contact forces at the start (damped pairs recorded),
-            // a predicted end state, forces there; their mean
-            forAll(bodies_, i)
-            {
-                states[i] = bodies_[i].state();
-            }
-            collision_->forces(bodies_, states, dt, subDt, Fc, Tc, true);
-            forAll(bodies_, i)
-            {
-                if (bodies_[i].motion().moves())
-                {
-                    advanceBody(bodies_[i], states[i], t, subDt, Fc[i], Tc[i]);
-                }
-            }
-            collision_->forces(bodies_, states, dt, subDt, Fc1, Tc1, false);
-            Fc = 0.5*(Fc + Fc1);
-            Tc = 0.5*(Tc + Tc1);
-            if (collision_->damping())
-            {
-                // lubrication and the film correction, implicit in the
-                // velocities: the end of the sub-step under every other
-                // force, then the forces that give each damped pair its
-                // force at the end velocities (explicit, damping c >> m/dt
-                // would be unstable; the film correction also undoes the
-                // step's lag of the hydrodynamic force in thin films)
-                startStates.setSize(nBodies);
-                forAll(bodies_, i)
-                {
-                    startStates[i] = bodies_[i].state();
-                    states[i] = startStates[i];
-                    if (bodies_[i].motion().moves())
-                    {
-                        advanceBody
-                        (
-                            bodies_[i], states[i], t, subDt, Fc[i], Tc[i]
-                        );
-                    }
-                }
-                collision_->dampingForces
-                (
-                    bodies_, startStates, states, referenceStates, subDt,
-                    Fc1, Tc1
-                );
-                Fc += Fc1;
-                Tc += Tc1;
-            }
-            FcMean += Fc/nSub;
-            TcMean += Tc/nSub;
-        }
-
-        forAll(bodies_, i)
-        {
-            immersedBody& body = bodies_[i];
-            if (!body.motion().moves())
-            {
-                continue;
-            }
-            const Pair<vector> acc =
-                advanceBody(body, body.state(), t, subDt, Fc[i], Tc[i]);
-            body.setAccelerations(acc.first(), acc.second());
-        }
+        collision_->subStep
+        (
+            set, states, t0 + stepi*subDt, dt, subDt, referenceStates, Fc, Tc
+        );
+        FcMean += Fc/nSub;
+        TcMean += Tc/nSub;
     }
 
+    forAll(bodies_, i)
+    {
+        bodies_[i].state() = toFoam(states[i]);
+    }
     if (colliding)
     {
         forAll(bodies_, i)

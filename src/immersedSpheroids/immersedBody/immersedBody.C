@@ -11,6 +11,7 @@ License
 #include "treeDataCell.H"
 #include "indexedOctree.H"
 #include "mathematicalConstants.H"
+#include "coreConversions.H"
 #include "diagTensor.H"
 
 // * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
@@ -162,9 +163,7 @@ Foam::immersedBody::immersedBody
 
 Foam::scalar Foam::immersedBody::volume() const
 {
-    return
-        4.0/3.0*constant::mathematical::pi
-       *semiAxes_.x()*semiAxes_.y()*semiAxes_.z();
+    return collision::ellipsoidVolume(immersedSpheroids::toCore(semiAxes_));
 }
 
 
@@ -176,11 +175,10 @@ Foam::scalar Foam::immersedBody::mass() const
 
 Foam::vector Foam::immersedBody::bodyInertia() const
 {
-    const scalar m5 = mass()/5;
-    const scalar a2 = sqr(semiAxes_.x());
-    const scalar b2 = sqr(semiAxes_.y());
-    const scalar c2 = sqr(semiAxes_.z());
-    return vector(m5*(b2 + c2), m5*(a2 + c2), m5*(a2 + b2));
+    return immersedSpheroids::toFoam
+    (
+        collision::ellipsoidInertia(immersedSpheroids::toCore(semiAxes_), mass())
+    );
 }
 
 

@@ -20,11 +20,15 @@ Description
        cells, fluid outside untouched, the reported hydrodynamic force and
        torque (penaltyTests.C);
     4. bad constant/immersedBodiesProperties: FatalIOError naming the
-       keyword and the file (badInputTests.C).
+       keyword and the file (badInputTests.C);
+    5. the coupled runs' body sub-step (coupledBodySet through the
+       collision model) against the core's vacuum one (collisionStep, which
+       the collision unit tests and validation/dryCollisions run): equal
+       trajectories in vacuum through a contact (integratorTests.C).
 
 Usage
     Test-immersedBodies -case CASE -volumeMeshes '(vol16 vol32 vol64)'
-        [-parts '(solidFraction motion penalty badInput)']
+        [-parts '(solidFraction motion penalty badInput integrator)']
 \*---------------------------------------------------------------------------*/
 
 #include "immersedBodiesTests.H"
@@ -87,13 +91,13 @@ int main(int argc, char *argv[])
     (
         "parts",
         "(name ...)",
-        "run only these parts: solidFraction motion penalty badInput"
+        "run only these parts: solidFraction motion penalty badInput integrator"
     );
     #include "setRootCase.H"
     #include "createTime.H"
     #include "createMesh.H"
 
-    wordList parts({"solidFraction", "motion", "penalty", "badInput"});
+    wordList parts({"solidFraction", "motion", "penalty", "badInput", "integrator"});
     args.readListIfPresent("parts", parts);
 
     if (parts.found("solidFraction"))
@@ -121,6 +125,11 @@ int main(int argc, char *argv[])
     {
         Info<< nl << "==== 4. Bad input" << endl;
         testBadInput(runTime, mesh);
+    }
+    if (parts.found("integrator"))
+    {
+        Info<< nl << "==== 5. One body integrator" << endl;
+        testIntegrator(mesh);
     }
 
     // OpenFOAM v1912's argList destructor ends the process with

@@ -1,93 +1,25 @@
 /**
  * @file CollisionModel.hpp
  * @brief Collision forces between spheroids and plane walls: pair search,
- *        overlap prefilter, certified distance, lubrication, soft contact.
+ *        overlap prefilter, certified distance, contact and lubrication.
  *
- * Per call (one body sub-step):
- *  1. candidate pairs from bounding spheres (largest semi-axis plus half the
- *     lubrication reach) and a cell list (PairSearch);
- *  2. prefilter: the axis-aligned boxes of the grown bodies below, then the
- *     exact algebraic test of Jia et al. on the bodies scaled
- *     about their centres by 1 + delta_i/a_min,i, which contain the bodies
- *     grown by delta_i (the support function grows by at least delta_i), so a
- *     separated answer proves the gap exceeds the reach delta_1 + delta_2 and
- *     no distance is computed (contact only: delta = 0, the bodies themselves);
- *  3. the signed distance by the dual method (the measured fastest at every
- *     aspect ratio and accuracy, what `auto` picks; it also gives the
- *     penetration depth and direction; if it does not converge, auto's other
- *     methods give the separated distance) to eps_d = distanceAccuracy x the
- *     smaller of the two bodies' smallest Gaussian curvature radii (founding
- *     paper eq. 1.6), warm-started from the pair's previous direction;
- *  4. contact (ContactLaw) at the midpoint of the two deepest points, with the
- *     pair's contact time set at the first touch,
- *         T_c = min(contactTime, pi maxOverlap a_min / |u_n|),
- *     a_min the smaller smallest semi-axis, u_n the impact speed: the overlap
- *     of the linear law stays below v T_c/pi <= maxOverlap a_min, so that fast
- *     bodies cannot pass through each other or a wall. k_n and eta_n are
- *     those of the effective mass at the first touch and stay fixed for the
- *     contact (a linear oscillator: its spring is conservative even while a
- *     turning spheroid moves the contact point; with k_n following the moving
- *     point's effective mass such impacts gained up to 6 % kinetic energy).
- *     While the bodies approach, the first touch's rule is applied again at
- *     every call: a body swinging into the contact after the touch (normal
- *     speed above the one T_c was made for) shortens T_c to pi D / |u_n|, D
- *     the overlap still allowed (at least half the cap), stiffening the
- *     spring from then on; the elastic force is integrated as dF = k_n
- *     d(delta) so that the stiffer spring never returns more work than it
- *     took (with the dashpot's pull off once F is spent). A sustained load
- *     (weight, the flow, bodies above) can be far too much for a spring made
- *     for an impact's contact time: each contact is stiffened, at any call,
- *     to k_n >= 2 W/cap, W the static load pressing the pair together (the
- *     bodies' external forces, CollisionBody::externalForce, and the contact
- *     forces of their other pairs in the previous call), so that W alone
- *     overlaps the pair by at most half the cap; an impact without a load is
- *     left alone;
- *  5. lubrication (LubricationLaw) with the Gaussian curvature radii at the
- *     closest points, between the activation and saturation gaps, held at its
- *     saturated value down to touching and off in contact (overlap). Its
- *     damping coefficient c reaches 6 pi mu a / eps_sat, far beyond what an
- *     explicit step can take (c dt < 2 m: a 4 mm spheroid in oil of 0.07 Pa s
- *     would need sub-steps of 3e-5 s), so forces() only records the pair and
- *     its coefficient at the start of the sub-step, and dampingForces() gives
- *     the force implicit in the velocities (backward Euler: the relative
- *     normal velocity at the END of the sub-step, all pairs solved together):
- *     unconditionally stable, and a body pressed onto a wall creeps at the
- *     speed F/c the film allows;
- *  6. walls: exact spheroid-plane distances (PlaneWall), the same laws with a
- *     fixed, infinitely heavy wall;
- *  7. the film correction (filmGap > 0 and a viscosity): a coupled flow
- *     solver's hydrodynamic force is explicit, computed from the flow that saw
- *     the bodies' velocities at the start of its time step. Where the fluid
- *     between two surfaces is thinner than a cell that force damps their
- *     relative normal motion with a coefficient D far beyond m/dt (the squeeze
- *     film on the grid: D dt/m about 2, fitted by hand to the force and
- *     velocity of a 4 mm spheroid lying on a wall in oil of 0.07 Pa s at 6
- *     cells per diameter, tests/foam/restingOnWallCase),
- *     and a damping that lags by a step makes the body oscillate with growing
- *     amplitude. For the pairs closer than filmGap (the cell size) forces()
- *     records the estimate D = 6 pi mu R^2 / max(h, filmGap/4) (R the Gaussian
- *     radius of a body at a wall, R1 R2/(R1 + R2) for a pair), and
- *     dampingForces() adds -D (u_n,end - u_n,ref) n: the lagged damping of the
- *     flow becomes one in phase with the motion (implicit), and nothing
- *     changes while the relative normal velocity does not (u_n,ref: at the
- *     start of the flow step). With the estimate D_e and the true D_t the
- *     step is stable while D_t - D_e < m/dt + D_e (either sign of the error).
- * subSteps() gives the number of body sub-steps a fluid step needs so that a
- * contact lasts at least subStepsPerContact sub-steps. Callers advance each
- * sub-step with Heun's predictor-corrector: forces at the start (recording the
- * damped pairs of steps 5 and 7), a predicted end state, forces there (not
- * recording), the mean of the two; then, if pairs were recorded, the end
- * velocities under that mean and every other force, dampingForces() from them,
- * and the step taken with the mean plus the damping force (collisionSubStep in
- * RigidBody.hpp and immersedBodies::advanceBodies do exactly this)
- * (validation/dryCollisions: the restitution error, worst over where the touch
- * falls in a sub-step, is about 0.35/subStepsPerContact in absolute terms:
- * e 0.97 -0.75 % at 10, -0.17 % at 20; e 0.5 -3.4 % at 20, -1.4 % at 50; the
- * medians are below 0.1 % from 20 for e >= 0.5; with the start forces only the
- * error is ~ 1.6/subStepsPerContact).
- * Non-convergence of a distance is never silent: it is counted in
- * statistics() (the last iterate is used, its certified bracket known) and a
- * non-finite force throws.
+ * Per call of forces() (one evaluation in a body sub-step):
+ *  1. candidate pairs from bounding spheres and a cell list (PairSearch);
+ *  2. prefilter: axis-aligned boxes of the bodies grown by their lubrication
+ *     reach, then the Jia et al. overlap test on the grown bodies;
+ *  3. the signed distance of the dual method to eps_d = distanceAccuracy x
+ *     the pair's smallest Gaussian curvature radius (founding paper eq. 1.6),
+ *     warm-started from the pair's previous direction;
+ *  4. contact (ContactLaw): a linear spring-dashpot whose contact time keeps
+ *     the overlap below maxOverlap a_min, stiffened under a sustained load;
+ *  5. lubrication (LubricationLaw) and the film correction, recorded as
+ *     damped pairs and applied implicitly by dampingForces();
+ *  6. walls: the same laws against exact spheroid-plane distances.
+ * SubStepper takes each body sub-step through forces() and dampingForces().
+ * The laws, their constants and the measurements behind them:
+ * docs/collisions.md; the scheme's accuracy: validation/dryCollisions.
+ * Non-convergence of a distance is counted in statistics() (the last
+ * iterate is used, its certified bracket known); a non-finite force throws.
  */
 #ifndef COLLISION_COLLISIONMODEL_HPP
 #define COLLISION_COLLISIONMODEL_HPP

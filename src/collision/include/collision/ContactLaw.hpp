@@ -60,6 +60,9 @@ struct SpringDashpot {
 /// k_n and eta_n for the effective mass, restitution e and contact time T_c.
 SpringDashpot springDashpot(Scalar effectiveMass, Scalar restitution, Scalar contactTime);
 
+/// The same oscillator given its stiffness: eta_n = -2 k_n T_c ln(e)/(pi^2 + ln^2 e).
+SpringDashpot springDashpotOfStiffness(Scalar stiffness, Scalar restitution, Scalar contactTime);
+
 /**
  * The contact force on body 2 (body 1 gets minus it): (F_e - eta_n u_n) n plus friction.
  * @param elasticForce the spring's force F_e >= 0: k_n delta for a constant

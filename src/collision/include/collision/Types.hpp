@@ -10,6 +10,7 @@
 
 namespace collision {
 
+using ellipsoids::kPi;
 using ellipsoids::Mat3;
 using ellipsoids::Quat;
 using ellipsoids::Scalar;

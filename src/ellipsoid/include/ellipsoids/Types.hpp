@@ -35,6 +35,9 @@ using Mat4 = Eigen::Matrix<Scalar, 4, 4>;
 /// Machine epsilon of Scalar.
 constexpr Scalar kEps = std::numeric_limits<Scalar>::epsilon();
 
+/// pi, for every layer above the geometry core too.
+constexpr Scalar kPi = 3.14159265358979323846;
+
 }  // namespace ellipsoids
 
 #endif

@@ -7,7 +7,8 @@ License
 
 #include "contactCollision.H"
 #include "immersedBody.H"
-#include "freeMotion.H"
+#include "coreConversions.H"
+#include "collision/BodySet.hpp"
 #include "planeWalls.H"
 #include "dictionaryChecks.H"
 #include "IOdictionary.H"
@@ -129,16 +130,6 @@ scalar readViscosity
         );
     }
     return fluidDensity*nu.value();
-}
-
-collision::Vec3 toEigen(const vector& v)
-{
-    return collision::Vec3(v.x(), v.y(), v.z());
-}
-
-vector toFoam(const collision::Vec3& v)
-{
-    return vector(v.x(), v.y(), v.z());
 }
 
 } // End anonymous namespace
@@ -274,81 +265,6 @@ vector toFoam(const collision::Vec3& v)
 }
 
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-void Foam::collisionModels::contact::convert
-(
-    const PtrList<immersedBody>& bodies,
-    const UList<bodyState>& states
-)
-{
-    collisionBodies_.clear();
-    collisionBodies_.reserve(bodies.size());
-    forAll(bodies, i)
-    {
-        const immersedBody& body = bodies[i];
-        const bodyState& s = states[i];
-        collisionBodies_.push_back
-        (
-            collision::CollisionBody
-            {
-                ellipsoids::Ellipsoid
-                (
-                    toEigen(body.semiAxes()),
-                    toEigen(s.centre),
-                    collision::Quat
-                    (
-                        s.orientation.w(), s.orientation.v().x(),
-                        s.orientation.v().y(), s.orientation.v().z()
-                    ).normalized()
-                )
-            }
-        );
-        collision::CollisionBody& c = collisionBodies_.back();
-        c.velocity = toEigen(s.velocity);
-        c.angularVelocity = toEigen(s.angularVelocity);
-        // fixed bodies are immovable obstacles; prescribed ones move (their
-        // speed counts for the sub-steps) but are infinitely heavy
-        c.movable = body.motion().moves();
-        c.filmGap = filmGap_;
-        if (externalForces_.size() == bodies.size())
-        {
-            c.externalForce = toEigen(externalForces_[i]);
-        }
-        c.mass =
-            body.motion().isFreeInTranslation()
-          ? body.mass()
-          : std::numeric_limits<scalar>::infinity();
-        c.inverseInertia.setZero();
-        if (body.motion().isFreeInRotation())
-        {
-            const tensor Iinv =
-                bodyMotions::inverseWorldInertia(s.orientation, body.bodyInertia());
-            c.inverseInertia <<
-                Iinv.xx(), Iinv.xy(), Iinv.xz(),
-                Iinv.yx(), Iinv.yy(), Iinv.yz(),
-                Iinv.zx(), Iinv.zy(), Iinv.zz();
-        }
-    }
-}
-
-
-void Foam::collisionModels::contact::copyOut
-(
-    vectorField& force,
-    vectorField& torque
-) const
-{
-    force.setSize(label(force_.size()));
-    torque.setSize(label(torque_.size()));
-    forAll(force, i)
-    {
-        force[i] = toFoam(force_[i]);
-        torque[i] = toFoam(torque_[i]);
-    }
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::collisionModels::contact::contact
@@ -377,8 +293,7 @@ Foam::collisionModels::contact::contact
     filmGap_
     (
         model_.settings().filmStabilisation ? readFilmGap(dict, mesh) : 0
-    ),
-    calls_(0)
+    )
 {
     const collision::CollisionSettings& s = model_.settings();
     Info<< "immersedBodies: collision model " << collision::toString(s.mode)
@@ -401,7 +316,7 @@ Foam::collisionModels::contact::contact
     Info<< ", walls (";
     for (const collision::PlaneWall& w : model_.walls())
     {
-        Info<< ' ' << w.name << " n = " << toFoam(w.normal);
+        Info<< ' ' << w.name << " n = " << immersedSpheroids::toFoam(w.normal);
     }
     Info<< " )" << endl;
 }
@@ -422,19 +337,20 @@ Foam::collisionModels::contact::contact
 
 Foam::label Foam::collisionModels::contact::subSteps
 (
-    const PtrList<immersedBody>& bodies,
+    const collision::BodySet& bodies,
+    const std::vector<collision::BodyState>& states,
     const scalar dt
 )
 {
-    List<bodyState> states(bodies.size());
-    forAll(bodies, i)
+    std::vector<collision::CollisionBody> collisionBodies;
+    collisionBodies.reserve(states.size());
+    for (std::size_t i = 0; i < states.size(); ++i)
     {
-        states[i] = bodies[i].state();
+        collisionBodies.push_back(bodies.collisionBody(i, states[i]));
     }
-    convert(bodies, states);
     try
     {
-        return model_.subSteps(collisionBodies_, dt, contactSteps_*dt);
+        return model_.subSteps(collisionBodies, dt, contactSteps_*dt);
     }
     catch (const std::exception& err)
     {
@@ -447,91 +363,10 @@ Foam::label Foam::collisionModels::contact::subSteps
 }
 
 
-void Foam::collisionModels::contact::forces
-(
-    const PtrList<immersedBody>& bodies,
-    const UList<bodyState>& states,
-    const scalar dt,
-    const scalar subDt,
-    vectorField& force,
-    vectorField& torque,
-    const bool recordDamping
-)
-{
-    convert(bodies, states);
-    try
-    {
-        model_.forces
-        (
-            collisionBodies_, contactSteps_*dt, subDt, force_, torque_,
-            recordDamping
-        );
-    }
-    catch (const std::exception& err)
-    {
-        FatalErrorInFunction
-            << "Collision forces at time " << mesh_.time().value() << ": "
-            << err.what() << nl << exit(FatalError);
-    }
-    ++calls_;
-    copyOut(force, torque);
-}
-
-
-void Foam::collisionModels::contact::dampingForces
-(
-    const PtrList<immersedBody>& bodies,
-    const UList<bodyState>& startStates,
-    const UList<bodyState>& endStates,
-    const UList<bodyState>& referenceStates,
-    const scalar subDt,
-    vectorField& force,
-    vectorField& torque
-)
-{
-    convert(bodies, startStates);
-    endVelocity_.resize(bodies.size());
-    endAngularVelocity_.resize(bodies.size());
-    refVelocity_.resize(bodies.size());
-    refAngularVelocity_.resize(bodies.size());
-    forAll(bodies, i)
-    {
-        endVelocity_[i] = toEigen(endStates[i].velocity);
-        endAngularVelocity_[i] = toEigen(endStates[i].angularVelocity);
-        refVelocity_[i] = toEigen(referenceStates[i].velocity);
-        refAngularVelocity_[i] = toEigen(referenceStates[i].angularVelocity);
-    }
-    try
-    {
-        model_.dampingForces
-        (
-            collisionBodies_, endVelocity_, endAngularVelocity_,
-            refVelocity_, refAngularVelocity_, subDt, force_, torque_
-        );
-    }
-    catch (const std::exception& err)
-    {
-        FatalErrorInFunction
-            << "Damping forces at time " << mesh_.time().value() << ": "
-            << err.what() << nl << exit(FatalError);
-    }
-    copyOut(force, torque);
-}
-
-
-void Foam::collisionModels::contact::setExternalForces
-(
-    const vectorField& externalForces
-)
-{
-    externalForces_ = externalForces;
-}
-
-
 void Foam::collisionModels::contact::report(const label nSubSteps)
 {
     const collision::CollisionStatistics& st = model_.statistics();
-    const scalar calls = max(calls_, 1);
+    const scalar calls = max(evaluations_, 1);
     Info<< "collisions: " << nSubSteps << " sub-step(s), per evaluation "
         << st.candidatePairs/calls << " candidate pairs, "
         << st.prefilterRejected/calls << " out of reach by the overlap test, "
@@ -578,7 +413,7 @@ void Foam::collisionModels::contact::report(const label nSubSteps)
             << "; their last iterate (certified bracket) was used" << endl;
     }
     model_.resetStatistics();
-    calls_ = 0;
+    evaluations_ = 0;
 }
 
 

@@ -36,42 +36,4 @@ Foam::collisionModels::none::none
 }
 
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::collisionModels::none::forces
-(
-    const PtrList<immersedBody>& bodies,
-    const UList<bodyState>&,
-    const scalar,
-    const scalar,
-    vectorField& force,
-    vectorField& torque,
-    const bool
-)
-{
-    force.setSize(bodies.size());
-    torque.setSize(bodies.size());
-    force = Zero;
-    torque = Zero;
-}
-
-
-void Foam::collisionModels::none::dampingForces
-(
-    const PtrList<immersedBody>& bodies,
-    const UList<bodyState>&,
-    const UList<bodyState>&,
-    const UList<bodyState>&,
-    const scalar,
-    vectorField& force,
-    vectorField& torque
-)
-{
-    force.setSize(bodies.size());
-    torque.setSize(bodies.size());
-    force = Zero;
-    torque = Zero;
-}
-
-
 // ************************************************************************* //

@@ -41,8 +41,7 @@ struct Packing {
 ellipsoids::Ellipsoid storableBody(const ellipsoids::Vec3& semiAxes, const ellipsoids::Vec3& centre,
                                    const ellipsoids::Quat& orientation);
 
-/// pi to double precision (C++17 has no std::numbers).
-constexpr double kPi = 3.14159265358979323846;
+using ellipsoids::kPi;
 
 /// N (pi/6) D^3 / L^3: the volume fraction of N equal-volume bodies of diameter D in a cube of side L.
 inline double volumeFractionOf(std::size_t count, double equivalentDiameter, double boxLength) {

@@ -1,0 +1,46 @@
+/**
+ * @file BodySet.hpp
+ * @brief What the collision sub-step (SubStepper) needs of the bodies it
+ *        moves: how the collision model sees each one, and how each one
+ *        moves under a collision force and its own other forces.
+ *
+ * Implemented in vacuum by RigidBodySet (tests, validation/dryCollisions) and
+ * in a flow by the OpenFOAM library's coupledBodySet (hydrodynamic force,
+ * buoyant weight, virtual mass, the body's motion model): both step through
+ * the same SubStepper.
+ */
+#ifndef COLLISION_BODYSET_HPP
+#define COLLISION_BODYSET_HPP
+
+#include "collision/CollisionModel.hpp"
+#include "collision/RigidBodyStep.hpp"
+
+#include <cstddef>
+
+namespace collision {
+
+class BodySet {
+ public:
+  virtual ~BodySet() = default;
+
+  virtual std::size_t size() const = 0;
+
+  /// Body i at the state s as the collision model sees it.
+  virtual CollisionBody collisionBody(std::size_t i, const BodyState& s) const = 0;
+
+  /**
+   * Advance s, a state of body i, from t over dt under the collision force
+   * fc and torque tc (about the centre, held over the step) and the body's
+   * other forces. Called for trial states too: it must not change the set.
+   */
+  virtual void advance(std::size_t i, BodyState& s, Scalar t, Scalar dt, const Vec3& fc,
+                       const Vec3& tc) const = 0;
+
+  /// Body i took the step from start to end under fc, tc (e.g. to keep its accelerations).
+  virtual void accept(std::size_t /*i*/, const BodyState& /*start*/, const BodyState& /*end*/,
+                      Scalar /*dt*/, const Vec3& /*fc*/, const Vec3& /*tc*/) {}
+};
+
+}  // namespace collision
+
+#endif

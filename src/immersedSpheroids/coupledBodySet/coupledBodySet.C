@@ -1,0 +1,169 @@
+/*---------------------------------------------------------------------------*\
+  spheroidFoam: particle-resolved flows of immersed spheroids for OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later (as OpenFOAM).
+\*---------------------------------------------------------------------------*/
+
+#include "coupledBodySet.H"
+#include "coreConversions.H"
+
+#include <limits>
+
+using namespace Foam::immersedSpheroids;
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::coupledBodySet::coupledBodySet
+(
+    PtrList<immersedBody>& bodies,
+    const scalar fluidDensity,
+    const vector& g,
+    const scalar virtualMass,
+    const scalar filmGap
+)
+:
+    bodies_(bodies),
+    fluidDensity_(fluidDensity),
+    g_(g),
+    virtualMass_(virtualMass),
+    filmGap_(filmGap)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::vector Foam::coupledBodySet::externalForce(const label i) const
+{
+    const immersedBody& body = bodies_[i];
+    return
+        body.hydroForce() + (body.density() - fluidDensity_)*body.volume()*g_;
+}
+
+
+std::size_t Foam::coupledBodySet::size() const
+{
+    return bodies_.size();
+}
+
+
+collision::CollisionBody Foam::coupledBodySet::collisionBody
+(
+    std::size_t i,
+    const collision::BodyState& s
+) const
+{
+    const immersedBody& body = bodies_[i];
+    collision::CollisionBody c
+    {
+        ellipsoids::Ellipsoid
+        (
+            toCore(body.semiAxes()), s.centre, s.orientation.normalized()
+        )
+    };
+    c.velocity = s.velocity;
+    c.angularVelocity = s.angularVelocity;
+    c.movable = body.motion().moves();
+    c.filmGap = filmGap_;
+    c.externalForce = toCore(externalForce(i));
+    c.mass =
+        body.motion().isFreeInTranslation()
+      ? body.mass()
+      : std::numeric_limits<scalar>::infinity();
+    c.inverseInertia.setZero();
+    if (body.motion().isFreeInRotation())
+    {
+        c.inverseInertia =
+            collision::inverseWorldInertia(s.orientation, toCore(body.bodyInertia()));
+    }
+    return c;
+}
+
+
+void Foam::coupledBodySet::advance
+(
+    std::size_t i,
+    collision::BodyState& s,
+    collision::Scalar t,
+    collision::Scalar dt,
+    const collision::Vec3& fc,
+    const collision::Vec3& tc
+) const
+{
+    const immersedBody& body = bodies_[i];
+    if (!body.motion().moves())
+    {
+        return;
+    }
+    const vector Fc = toFoam(fc);
+    const vector Tc = toFoam(tc);
+    const scalar beta = virtualMass_*fluidDensity_/body.density();
+
+    vector impulse = (externalForce(i) + (1 + beta)*Fc)*dt;
+    vector angularImpulse = (body.hydroTorque() + (1 + beta)*Tc)*dt;
+    if (beta > 0)
+    {
+        impulse += beta*body.mass()*body.acceleration()*dt;
+        angularImpulse +=
+            beta*dt
+           *(
+                toFoam
+                (
+                    collision::worldInertia(s.orientation, toCore(body.bodyInertia()))
+                )
+              & body.angularAcceleration()
+            );
+    }
+
+    bodyState state = toFoam(s);
+    body.motion().advance
+    (
+        state,
+        t,
+        dt,
+        impulse,
+        angularImpulse,
+        (1 + beta)*body.mass(),
+        (1 + beta)*body.bodyInertia()
+    );
+    s = toCore(state);
+}
+
+
+void Foam::coupledBodySet::accept
+(
+    std::size_t i,
+    const collision::BodyState& start,
+    const collision::BodyState& end,
+    collision::Scalar dt,
+    const collision::Vec3& fc,
+    const collision::Vec3& tc
+)
+{
+    immersedBody& body = bodies_[i];
+    if (!body.motion().moves())
+    {
+        return;
+    }
+    // the hydrodynamic accelerations (without the collision force's)
+    vector a = (toFoam(end.velocity) - toFoam(start.velocity))/dt;
+    vector alpha =
+        (toFoam(end.angularVelocity) - toFoam(start.angularVelocity))/dt;
+    if (body.motion().isFreeInTranslation())
+    {
+        a -= toFoam(fc)/body.mass();
+    }
+    if (body.motion().isFreeInRotation())
+    {
+        alpha -=
+            toFoam
+            (
+                collision::inverseWorldInertia(end.orientation, toCore(body.bodyInertia()))
+            )
+          & toFoam(tc);
+    }
+    body.setAccelerations(a, alpha);
+}
+
+
+// ************************************************************************* //

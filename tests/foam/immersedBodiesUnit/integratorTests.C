@@ -1,0 +1,162 @@
+/*---------------------------------------------------------------------------*\
+  spheroidFoam: particle-resolved flows of immersed spheroids for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    5. One body integrator. A spinning prolate spheroid thrown at a sphere
+    in vacuum (no fluid, no gravity; contact with friction), stepped twice:
+    - as coupled runs step bodies: immersedBody objects in a coupledBodySet,
+      the sub-steps and each sub-step through the run-time selected
+      collision model (collisionModel::subSteps, collisionModel::subStep);
+    - as the collision unit tests and validation/dryCollisions step them:
+      collision::RigidBody in collision::collisionStep.
+    With no fluid every extra force of the coupled set is zero, so the two
+    trajectories must agree exactly (same operations on the same numbers):
+    any difference between the two paths' sub-step or rigid-body step fails
+    the test. The bodies must touch (the contact changes both velocities)
+    for the comparison to mean something.
+\*---------------------------------------------------------------------------*/
+
+#include "immersedBodiesTests.H"
+#include "immersedBody.H"
+#include "coupledBodySet.H"
+#include "coreConversions.H"
+#include "collisionModel.H"
+#include "collision/CollisionModel.hpp"
+#include "collision/RigidBody.hpp"
+
+using namespace testChecks;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+using namespace immersedBodiesTests;
+using immersedSpheroids::toCore;
+
+collision::RigidBody rigidCopy(const immersedBody& body)
+{
+    collision::RigidBody b;
+    static_cast<collision::BodyState&>(b) = toCore(body.state());
+    b.semiAxes = toCore(body.semiAxes());
+    b.density = body.density();
+    return b;
+}
+
+bool sameState(const collision::BodyState& a, const collision::BodyState& b)
+{
+    return
+        a.centre == b.centre && a.velocity == b.velocity
+     && a.angularVelocity == b.angularVelocity
+     && a.orientation.coeffs() == b.orientation.coeffs();
+}
+
+} // End anonymous namespace
+
+
+void immersedBodiesTests::testIntegrator(const fvMesh& mesh)
+{
+    PtrList<immersedBody> bodies(2);
+    bodies.set
+    (
+        0,
+        new immersedBody
+        (
+            "spheroid",
+            parse
+            (
+                "semiAxes (0.002 0.001 0.001); density 7800; centre (0 0 0);"
+                "axis (1 1 0); velocity (0.5 0.02 0); angularVelocity (0 0 30);"
+                "motion { type free; }",
+                "test/spheroid"
+            )
+        )
+    );
+    bodies.set
+    (
+        1,
+        new immersedBody
+        (
+            "sphere",
+            parse
+            (
+                "semiAxes (0.001 0.001 0.001); density 2500;"
+                "centre (0.0032 0.0004 0); velocity (-0.3 0 0);"
+                "motion { type free; }",
+                "test/sphere"
+            )
+        )
+    );
+    const scalar dt = 1e-4;
+    const dictionary properties = parse
+    (
+        "collision { type contact; restitution 0.8; friction 0.3;"
+        " contactSteps 10; filmStabilisation no; }",
+        "test/integrator"
+    );
+
+    // coupled: no fluid, no gravity, no virtual mass, no film
+    autoPtr<collisionModel> coupledModel =
+        collisionModel::New(properties, mesh, 0);
+    coupledBodySet set(bodies, 0, Zero, 0, 0);
+    std::vector<collision::BodyState> states;
+    for (const immersedBody& b : bodies)
+    {
+        states.push_back(toCore(b.state()));
+    }
+
+    // vacuum: the core's own
+    collision::CollisionSettings settings;
+    settings.mode = collision::CollisionMode::contact;
+    settings.contact.restitution = 0.8;
+    settings.contact.friction = 0.3;
+    settings.filmStabilisation = false;
+    collision::CollisionModel vacuumModel(settings, {});
+    std::vector<collision::RigidBody> vacuum{rigidCopy(bodies[0]), rigidCopy(bodies[1])};
+
+    const collision::BodyState start0 = states[0], start1 = states[1];
+    bool same = true;
+    label maxSubSteps = 0;
+    vectorField Fc, Tc;
+    for (label stepi = 0; stepi < 80 && same; ++stepi)
+    {
+        const scalar t = stepi*dt;
+        const label nSub = coupledModel->subSteps(set, states, dt);
+        maxSubSteps = max(maxSubSteps, nSub);
+        for (label k = 0; k < nSub; ++k)
+        {
+            coupledModel->subStep(set, states, t + k*dt/nSub, dt, dt/nSub, {}, Fc, Tc);
+        }
+        const int nVacuum = collision::collisionStep(vacuum, vacuumModel, 10*dt, dt);
+        same = nVacuum == nSub;
+        for (std::size_t i = 0; i < states.size(); ++i)
+        {
+            same = same && sameState(states[i], vacuum[i]);
+        }
+        if (!same)
+        {
+            Info<< "    the paths differ after step " << stepi << endl;
+        }
+    }
+    const scalar dv0 = (states[0].velocity - start0.velocity).norm();
+    const scalar dv1 = (states[1].velocity - start1.velocity).norm();
+    const scalar dw0 = (states[0].angularVelocity - start0.angularVelocity).norm();
+    Info<< "    velocity change by the contact: spheroid " << dv0 << " m/s, sphere "
+        << dv1 << " m/s; spin change " << dw0 << " rad/s; up to " << maxSubSteps
+        << " sub-steps" << endl;
+    check
+    (
+        dv0 > 0.05 && dv1 > 0.2 && dw0 > 1 && maxSubSteps > 1,
+        "integrator: the bodies touch (velocities and spin changed by the contact)"
+    );
+    check
+    (
+        same,
+        "integrator: coupled sub-steps (coupledBodySet, collisionModel) equal the"
+        " core's vacuum collisionStep exactly"
+    );
+}
+
+
+// ************************************************************************* //

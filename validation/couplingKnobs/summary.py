@@ -1,10 +1,13 @@
 """Tables of validation/couplingKnobs/results/runs.csv: per knob, the settling speed at 0.2 s,
 its difference to the series' reference run and the time per step relative to the default
 (8 cells/D, penaltyRatio 1e-3, 1 sub-step; the cpd runs include the default's mesh)."""
-import csv
 import sys
+from pathlib import Path
 
-rows = list(csv.DictReader(open(sys.argv[1])))
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+from validationTools import read_csv  # noqa: E402
+
+rows = read_csv(sys.argv[1], missing_ok=False)
 default = next((r for r in rows if r["knob"] == "cpd" and r["value"] == "8"), None)
 series = {
     "cpd": ("cells per diameter", lambda r: -float(r["value"])),

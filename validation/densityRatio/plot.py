@@ -6,16 +6,19 @@ max_n |u_n - (u_{n-1} + u_{n+1})/2| over the second half of the run divided by m
 A run is called stable when it completed, stayed bounded (|u| < 1 m/s; the terminal speeds
 here are below 0.2 m/s) and its oscillation is below 2 %.
 """
-import csv
 import glob
 import os
 import sys
+from pathlib import Path
 
 import h5py
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+from validationTools import write_csv  # noqa: E402
 
 # plot.py RUN_ROOT OUT_DIR: the runs are RUN_ROOT/<scheme>-cv<C_v>-<ratio>
 run_root = os.path.abspath(sys.argv[1])
@@ -60,10 +63,7 @@ fig.tight_layout()
 fig.savefig(os.path.join(here, "densityRatio.png"), dpi=110)
 rows.sort(key=lambda r: (r["scheme"], -r["ratio"]))
 os.makedirs(os.path.join(here, "results"), exist_ok=True)
-with open(os.path.join(here, "results", "runs.csv"), "w", newline="") as f:
-    wr = csv.DictWriter(f, list(rows[0].keys()))
-    wr.writeheader()
-    wr.writerows(rows)
+write_csv(os.path.join(here, "results", "runs.csv"), rows)
 with open(os.path.join(here, "results", "summary.md"), "w") as f:
     f.write("| scheme, virtual mass | rho_p/rho_f | status | stable | max speed (m/s) | final u_z (m/s) "
             "| odd-even oscillation |\n|---|---|---|---|---|---|---|\n")

@@ -6,11 +6,11 @@
 Reads RESULTS_DIR (default: validation/dryCollisions/results) and writes there
 restitution.png, spheroidWall.png, extremes.png and table.md.
 """
-import csv
 import os
 import statistics
 import sys
 from collections import defaultdict
+from pathlib import Path
 
 import matplotlib
 
@@ -18,13 +18,15 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+from validationTools import read_csv  # noqa: E402
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 RESULTS = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "results")
 
 
 def read(name):
-    with open(os.path.join(RESULTS, name)) as f:
-        return list(csv.DictReader(f))
+    return read_csv(os.path.join(RESULTS, name), missing_ok=False)
 
 
 def num(r, k):

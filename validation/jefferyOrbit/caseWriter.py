@@ -11,36 +11,18 @@ rho_f = 1; nu = gamma a^2/Re.
 """
 import math
 import os
-import subprocess
 import sys
+from pathlib import Path
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-TOP = os.path.abspath(os.path.join(HERE, "..", ".."))
-REFINED_BOX_MESH = os.path.join(TOP, "applications", "utilities", "refinedBoxMesh",
-                                "refinedBoxMesh.py")
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+from validationTools import refined_box_mesh, write_dict  # noqa: E402
 
-HEADER = """/*--------------------------------*- C++ -*----------------------------------*\\
-  spheroidFoam validation: Jeffery orbit of a spheroid in shear (validation/jefferyOrbit)
-\\*---------------------------------------------------------------------------*/
-FoamFile
-{{
-    version     2.0;
-    format      ascii;
-    class       {cls};
-    location    "{loc}";
-    object      {obj};
-}}
-// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
-
-"""
-
-FOOTER = "\n// ************************************************************************* //\n"
+TITLE = "spheroidFoam validation: Jeffery orbit of a spheroid in shear (validation/jefferyOrbit)"
 
 
 def write(path, cls, loc, obj, body):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as f:
-        f.write(HEADER.format(cls=cls, loc=loc, obj=obj) + body + FOOTER)
+    """Write one OpenFOAM file of a Jeffery-orbit case (the banner names this validation)."""
+    write_dict(path, cls, loc, obj, body, TITLE)
 
 
 def write_case(case, r=2.5, re=0.1, cpd=8, dt=0.02, end_time=20.0, box=(10.0, 10.0, 6.0),
@@ -59,16 +41,11 @@ def write_case(case, r=2.5, re=0.1, cpd=8, dt=0.02, end_time=20.0, box=(10.0, 10
     fz = math.ceil((b + margin) / h) * h
     if fxy >= 0.5 * min(lx, hy) or fz >= 0.5 * lz:
         sys.exit("caseWriter: the fine region does not fit in the box")
-    os.makedirs(os.path.join(case, "system"), exist_ok=True)
-    cmd = ["/usr/bin/python3", REFINED_BOX_MESH,
-           "--box", *(f"{v:.12g}" for v in (-lx / 2, lx / 2, -hy / 2, hy / 2, -lz / 2, lz / 2)),
-           "--fine", *(f"{v:.12g}" for v in (-fxy, fxy, -fxy, fxy, -fz, fz)),
-           "--h", f"{h:.12g}", "--growth", str(growth), "--max-ratio", str(max_ratio),
-           "--periodic", "x", "--periodic", "z", "--patch", "yMin:wall", "--patch", "yMax:wall",
-           "-o", os.path.join(case, "system", "blockMeshDict")]
-    out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
-    with open(os.path.join(case, "log.refinedBoxMesh"), "w") as f:
-        f.write(" ".join(cmd) + "\n" + out)
+    refined_box_mesh(case, [
+        "--box", *(f"{v:.12g}" for v in (-lx / 2, lx / 2, -hy / 2, hy / 2, -lz / 2, lz / 2)),
+        "--fine", *(f"{v:.12g}" for v in (-fxy, fxy, -fxy, fxy, -fz, fz)),
+        "--h", f"{h:.12g}", "--growth", str(growth), "--max-ratio", str(max_ratio),
+        "--periodic", "x", "--periodic", "z", "--patch", "yMin:wall", "--patch", "yMax:wall"])
     if write_interval is None:
         write_interval = end_time
     write(os.path.join(case, "system", "controlDict"), "dictionary", "system", "controlDict", f"""\

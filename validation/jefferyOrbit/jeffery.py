@@ -10,13 +10,17 @@ same attitude); Jeffery (1922), axis in the flow-gradient plane:
 """
 import math
 import os
-import re
 import subprocess
+import sys
 import time
+from pathlib import Path
 
 import numpy as np
 
 import caseWriter
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+from validationTools import mesh_cells  # noqa: E402
 
 
 def jeffery_phi(t, r, gamma=1.0, t0=0.0, phi0=0.0):
@@ -136,8 +140,7 @@ expressions
     for app in (["blockMesh"], ["setExprFields"]):
         with open(os.path.join(case, "log." + app[0]), "w") as out:
             subprocess.run(app, cwd=case, stdout=out, stderr=subprocess.STDOUT, check=True)
-    with open(os.path.join(case, "log.blockMesh")) as f:
-        cells = int(re.search(r"nCells:\s*(\d+)", f.read()).group(1))
+    cells = mesh_cells(case)
     if verbose:
         print(f"  {os.path.basename(case)}: {cells} cells, h = {info['h']:.4g}, "
               f"nu = {info['nu']:.4g}, viscous number nu dt/h^2 = {info['lam']:.3g}", flush=True)

@@ -20,20 +20,20 @@ single: one run in the folder CASE (created; used by tests/foam/jefferyOrbitQuic
       there, the growth of the step-to-step oscillation).
 """
 import argparse
-import csv
 import math
 import os
 import re
 import shutil
-import socket
 import sys
-import time
+from pathlib import Path
 
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
 import jeffery  # noqa: E402
+from validationTools import cpu_seconds, mesh_cells, provenance, read_csv, write_csv  # noqa: E402
 
 RESULTS = os.path.join(HERE, "results")
 RUNS_CSV = os.path.join(RESULTS, "runs.csv")
@@ -95,26 +95,6 @@ def campaign(quick=False):
     return runs
 
 
-def provenance():
-    """The commit of the library the run used: HEAD, '+src' if src/ differs from it."""
-    import subprocess
-    top = os.path.abspath(os.path.join(HERE, "..", ".."))
-    try:
-        head = subprocess.run(["git", "-C", top, "rev-parse", "--short", "HEAD"], check=True,
-                              capture_output=True, text=True).stdout.strip()
-        dirty = subprocess.run(["git", "-C", top, "diff", "--quiet", "HEAD", "--", "src"]).returncode
-        return head + ("+src" if dirty else "")
-    except (OSError, subprocess.CalledProcessError):
-        return "unknown"
-
-
-def read_csv(path):
-    if not os.path.exists(path):
-        return []
-    with open(path) as fh:
-        return list(csv.DictReader(fh))
-
-
 def oscillation_growth(omega):
     """(growth factor per step, final amplitude) of the period-2 (step-to-step
     alternating) part of omega_z, from its second differences
@@ -163,15 +143,6 @@ def summarise(case, kw):
     return out
 
 
-def cpu_seconds(case):
-    try:
-        with open(os.path.join(case, "log.solver")) as fh:
-            t = re.findall(r"ExecutionTime = (\S+) s", fh.read())
-        return float(t[-1]) if t else float("nan")
-    except OSError:
-        return float("nan")
-
-
 def do_run(args):
     csv_path = os.path.join(RESULTS, "quick.csv") if args.quick else RUNS_CSV
     os.makedirs(RESULTS, exist_ok=True)
@@ -188,8 +159,7 @@ def do_run(args):
         try:
             if args.collect:
                 # an existing run (e.g. one started by hand with the same settings)
-                with open(os.path.join(case, "log.blockMesh")) as fh:
-                    cells = int(re.search(r"nCells:\s*(\d+)", fh.read()).group(1))
+                cells = mesh_cells(case)
                 with open(os.path.join(case, "log.solver")) as fh:
                     wall = float(re.findall(r"ClockTime = (\S+) s", fh.read())[-1])
             else:
@@ -201,8 +171,7 @@ def do_run(args):
             failed = True
             wall = float("nan")
             info = dict(lam=kw["dt"] * 0.0)
-            with open(os.path.join(case, "log.blockMesh")) as fh:
-                cells = int(re.search(r"nCells:\s*(\d+)", fh.read()).group(1))
+            cells = mesh_cells(case)
         s = summarise(case, kw)
         if failed:
             s["status"] = "DIVERGED"
@@ -218,8 +187,7 @@ def do_run(args):
                    cells=cells, end_time=kw["end_time"],
                    steps=len(jeffery.read_series(case)[0]) - 1,
                    wall_s=f"{wall:.0f}", cpu_s=f"{cpu_seconds(case):.0f}",
-                   host=socket.gethostname(), date=time.strftime("%Y-%m-%d %H:%M"),
-                   commit=provenance(), **s)
+                   **provenance(), **s)
         row["lambda"] = f"{nu * kw['dt'] / h ** 2:.3g}"
         print("  " + ", ".join(f"{k} {row.get(k, '')}" for k in
                                ("status", "growth_per_step", "omega_end", "omega_jeffery_end",
@@ -233,11 +201,7 @@ def do_run(args):
         else:
             shutil.copy(os.path.join(case, "postProcessing", "immersedBodies", "bodies.h5"),
                         os.path.join(RESULTS, f"{name}.h5"))
-        rows = [r for r in read_csv(csv_path) if r["name"] != name] + [row]
-        with open(csv_path, "w", newline="") as fh:
-            wr = csv.DictWriter(fh, fieldnames=FIELDS)
-            wr.writeheader()
-            wr.writerows(rows)
+        write_csv(csv_path, [r for r in read_csv(csv_path) if r["name"] != name] + [row], FIELDS)
     if not ok:
         sys.exit(1)
 
@@ -257,10 +221,7 @@ def do_single(args):
                alternation=f"{oscillation_growth(om[:, 2])[1]:.3g}",
                out_of_plane=f"{pz[-1]:.3g}", wall_s=f"{wall:.1f}",
                cpu_s=f"{cpu_seconds(case):.1f}")
-    with open(os.path.join(case, "rotation.csv"), "w", newline="") as fh:
-        w = csv.DictWriter(fh, fieldnames=list(row))
-        w.writeheader()
-        w.writerow(row)
+    write_csv(os.path.join(case, "rotation.csv"), [row])
     print(", ".join(f"{k} {v}" for k, v in row.items()))
 
 

@@ -8,16 +8,18 @@ Period estimates of a run started at phi = 0 (axis along the gradient):
   fit of Jeffery's curve tan(phi) = r' tan(2 pi t/T + theta0) with T, r' and
   theta0 free (t > 1).
 """
-import csv
 import math
 import os
 import sys
+from pathlib import Path
 
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
 import jeffery  # noqa: E402
+from validationTools import read_csv  # noqa: E402
 
 R = 2.5
 
@@ -34,8 +36,7 @@ def main(results):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    with open(os.path.join(results, "runs.csv")) as fh:
-        rows = list(csv.DictReader(fh))
+    rows = read_csv(os.path.join(results, "runs.csv"), missing_ok=False)
     TJ = jeffery.jeffery_period(R)
     md = [f"## Period (r = {R}, Re = gamma a^2/nu = 0.1; Jeffery: T = 2 pi (r + 1/r)/gamma = "
           f"{TJ:.4f})", "",

@@ -10,14 +10,17 @@ summary.md (per method: statuses, worst |d - d*|/eps_d, bracket check, scale
 invariance). Debian's /usr/bin/python3 with python3-matplotlib.
 """
 import collections
-import csv
 import os
 import sys
+from pathlib import Path
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+from validationTools import read_csv  # noqa: E402
 
 AR_LABEL = {1 / 6: "1/6", 1 / 3: "1/3", 2 / 3: "2/3", 1.5: "3/2", 3.0: "3", 6.0: "6"}
 
@@ -30,15 +33,13 @@ def ar_name(ar):
 
 
 def load(path):
-    rows = []
-    with open(path) as f:
-        for r in csv.DictReader(f):
-            for k in ("lambda", "ar", "dStarRel", "distErrRel", "pointErrRel", "lowerRel", "upperRel", "timeUs"):
-                r[k] = float(r[k])
-            r["epsRel"] = float(r["epsRel"]) if r["epsRel"] else None
-            r["iterations"] = int(r["iterations"])
-            r["bracketContains"] = r["bracketContains"] == "1"
-            rows.append(r)
+    rows = read_csv(path, missing_ok=False)
+    for r in rows:
+        for k in ("lambda", "ar", "dStarRel", "distErrRel", "pointErrRel", "lowerRel", "upperRel", "timeUs"):
+            r[k] = float(r[k])
+        r["epsRel"] = float(r["epsRel"]) if r["epsRel"] else None
+        r["iterations"] = int(r["iterations"])
+        r["bracketContains"] = r["bracketContains"] == "1"
     return rows
 
 

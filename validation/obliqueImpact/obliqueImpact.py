@@ -10,81 +10,57 @@ The spheroid (D_eq = 4 mm, steel 7800 kg/m^3) starts at gap 1.5 D_eq with 0.6 m/
 at 30 degrees from the wall normal, its axis in the plane of motion and tilted 45
 degrees from the normal, in oil (rho_f 935, mu 0.01 Pa s; St = rho_p U D_eq/(9 mu)
 ~ 200). Box 6 x 4 x 4 D_eq, bottom the collision wall; lubricationContact, e_dry 0.97,
-friction 0 and 0.3. Results: results/runs.csv (rebound quantities), results/<name>.h5,
+friction 0 and 0.3. The case is caseTemplate/ with the mesh, the time step, the end time and
+the friction set per run. Results: results/runs.csv (rebound quantities), results/<name>.h5,
 results/table.md, results/trajectory.png.
 """
 import argparse
-import csv
 import math
 import os
 import shutil
-import socket
 import subprocess
 import sys
 import time
+from pathlib import Path
 
 import numpy as np
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+from validationTools import (provenance, read_csv, set_entry, substitute_re,  # noqa: E402
+                             write_csv)
+
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "wetRebound"))
-from wetRebound import provenance, read_csv, sub, write_rows  # noqa: E402
 
 RESULTS = os.path.join(HERE, "results")
 RUNS_CSV = os.path.join(RESULTS, "runs.csv")
-D_EQ, AR, RHO_P, RHO_F, MU = 4e-3, 2.0, 7800.0, 935.0, 0.01
-U0, IMPACT_DEG, TILT_DEG = 0.6, 30.0, 45.0
+# D_eq, the release speed and its angle from the wall normal in caseTemplate/ (they set the
+# time step and the end time)
+D_EQ, U0, IMPACT_DEG = 4e-3, 0.6, 30.0
 FIELDS = ["name", "friction", "cpd", "cells", "dt", "steps", "impacts", "u_n_in", "u_t_in", "u_n_out",
           "u_t_out", "omega_y_out", "rebound_angle_deg", "tilt_in_deg", "tilt_out_deg",
           "max_overlap_amin", "max_omega_y", "max_tilt_deg", "impact_interval_ms", "u_z_after_first",
           "wall_s", "host", "date", "commit"]
 
 
-def semi_axes():
-    a = AR ** (2 / 3) * D_EQ / 2
-    b = AR ** (-1 / 3) * D_EQ / 2
-    return a, b
-
-
 def write_case(case, friction, cpd, quick):
-    a, b = semi_axes()
+    """case/: a copy of caseTemplate/ (the body, the fluid, the 6 x 4 x 4 D_eq box) with the
+    mesh, the time step, the end time and the friction of this run."""
     h = D_EQ / cpd
     dt = 0.4 * h / U0
-    lx, ly, lz = 6 * D_EQ, 4 * D_EQ, 4 * D_EQ
     nx, ny, nz = round(6 * cpd), round(4 * cpd), round(4 * cpd)
-    src = os.path.join(HERE, "..", "wetRebound", "caseTemplate")
-    shutil.rmtree(case, ignore_errors=True)
-    shutil.copytree(src, case)
-    mm = 1e3
-    bm = f"{case}/system/blockMeshDict"
-    sub(bm, r"^// .*cells.*$", f"// 6 x 4 x 4 D_eq, D_eq = 4 mm, {cpd} cells per D_eq")
-    sub(bm, r"\(9 0 0\) \(9 9 0\) \(0 9 0\)",
-        f"({lx * mm:g} 0 0) ({lx * mm:g} {ly * mm:g} 0) (0 {ly * mm:g} 0)")
-    sub(bm, r"\(0 0 12\) \(9 0 12\) \(9 9 12\) \(0 9 12\)",
-        f"(0 0 {lz * mm:g}) ({lx * mm:g} 0 {lz * mm:g}) ({lx * mm:g} {ly * mm:g} {lz * mm:g}) "
-        f"(0 {ly * mm:g} {lz * mm:g})")
-    sub(bm, r"\(24 24 32\)", f"({nx} {ny} {nz})")
-    # the lowest point of the tilted spheroid: support height sqrt(n^T P n)
-    tilt = math.radians(TILT_DEG)
-    half_height = math.sqrt((a * math.cos(tilt)) ** 2 + (b * math.sin(tilt)) ** 2)
-    zc = half_height + 1.5 * D_EQ
-    impact = math.radians(IMPACT_DEG)
-    ux, uz = U0 * math.sin(impact), -U0 * math.cos(impact)
+    # the template's start: gap 1.5 D_eq, velocity at IMPACT_DEG from the wall normal
+    uz = -U0 * math.cos(math.radians(IMPACT_DEG))
     t_end = (1.5 * D_EQ / -uz) * (0.5 if quick else 2.6)
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(os.path.join(HERE, "caseTemplate"), case)
+    bm = f"{case}/system/blockMeshDict"
+    substitute_re(bm, r"^// .*cells per D_eq$", f"// 6 x 4 x 4 D_eq, D_eq = 4 mm, {cpd} cells per D_eq")
+    substitute_re(bm, r"^(\s*hex \(0 1 2 3 4 5 6 7\) )\(\d+ \d+ \d+\)", rf"\g<1>({nx} {ny} {nz})")
     cd = f"{case}/system/controlDict"
-    sub(cd, r"^endTime .*$", f"endTime         {t_end:.6g};")
-    sub(cd, r"^deltaT .*$", f"deltaT          {dt:.6g};")
-    sub(cd, r"^maxDeltaT .*$", f"maxDeltaT       {dt:.6g};")
-    sub(cd, r"^writeInterval .*$", "writeInterval   100000;")
-    sub(f"{case}/constant/transportProperties", r"^nu .*$", f"nu              {MU / RHO_F:.8g};")
-    p = f"{case}/constant/immersedBodiesProperties"
-    sub(p, r"^fluidDensity .*$", f"fluidDensity    {RHO_F:g};")
-    sub(p, r"semiAxes .*$", f"semiAxes        ({a:.6g} {b:.6g} {b:.6g});")
-    sub(p, r"density         7800;", f"density         {RHO_P:g};")
-    # axis in the x-z plane, tilted from the wall normal towards +x
-    sub(p, r"centre .*$", f"centre          ({1.5 * D_EQ:.6g} {ly / 2:.6g} {zc:.6g});\n"
-        f"        axis            ({math.sin(tilt):.8f} 0 {math.cos(tilt):.8f});")
-    sub(p, r"velocity .*$", f"velocity        ({ux:.6g} 0 {uz:.6g});")
-    sub(p, r"restitution     0.97;", f"restitution     0.97;\n    friction        {friction:g};")
+    set_entry(cd, "endTime", f"{t_end:.6g}")
+    set_entry(cd, "deltaT", f"{dt:.6g}")
+    set_entry(cd, "maxDeltaT", f"{dt:.6g}")
+    set_entry(f"{case}/constant/immersedBodiesProperties", "friction", f"{friction:g}")
     return dict(dt=dt, cells=nx * ny * nz)
 
 
@@ -175,12 +151,12 @@ def run_one(friction, cpd, force, quick):
             return
         sys.exit(f"obliqueImpact: {tag}: the spheroid never reached the wall")
     row = dict(name=tag, friction=friction, cpd=cpd, cells=info["cells"], dt=f"{info['dt']:.6g}",
-               steps=len(r["t"]) - 1, wall_s=round(wall), host=socket.gethostname(),
-               date=time.strftime("%Y-%m-%d %H:%M"), commit=provenance(), **measured(r))
+               steps=len(r["t"]) - 1, wall_s=round(wall), **provenance(), **measured(r))
     print("  " + ", ".join(f"{k} {row[k]}" for k in FIELDS[6:15]), flush=True)
     if not quick:
         shutil.copy(h5, os.path.join(RESULTS, f"{tag}.h5"))
-    write_rows(out_csv, FIELDS, [x for x in read_csv(out_csv) if x["name"] != tag] + [row])
+    write_csv(out_csv, [x for x in read_csv(out_csv) if x["name"] != tag] + [row], FIELDS,
+              ignore_extra=True)
 
 
 def do_plot():
@@ -228,7 +204,7 @@ def do_collect():
     rows = read_csv(RUNS_CSV)
     for row in rows:
         row.update(measured(analyse(os.path.join(RESULTS, f"{row['name']}.h5"))))
-    write_rows(RUNS_CSV, FIELDS, rows)
+    write_csv(RUNS_CSV, rows, FIELDS, ignore_extra=True)
     print(f"obliqueImpact: {len(rows)} runs re-analysed")
 
 

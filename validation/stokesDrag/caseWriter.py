@@ -8,30 +8,13 @@ OpenFOAM's meanVelocityForce (Re = U D_eq / nu).
 """
 import math
 import os
-import subprocess
 import sys
+from pathlib import Path
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-TOP = os.path.abspath(os.path.join(HERE, "..", ".."))
-REFINED_BOX_MESH = os.path.join(TOP, "applications", "utilities", "refinedBoxMesh",
-                                "refinedBoxMesh.py")
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+from validationTools import refined_box_mesh, write_dict  # noqa: E402
 
-HEADER = """/*--------------------------------*- C++ -*----------------------------------*\\
-  spheroidFoam validation: Stokes drag of a fixed spheroid (validation/stokesDrag)
-\\*---------------------------------------------------------------------------*/
-FoamFile
-{{
-    version     2.0;
-    format      ascii;
-    class       {cls};
-    location    "{loc}";
-    object      {obj};
-}}
-// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
-
-"""
-
-FOOTER = "\n// ************************************************************************* //\n"
+TITLE = "spheroidFoam validation: Stokes drag of a fixed spheroid (validation/stokesDrag)"
 
 
 def semi_axes(ar, d_eq=1.0):
@@ -42,9 +25,8 @@ def semi_axes(ar, d_eq=1.0):
 
 
 def write(path, cls, loc, obj, body):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as f:
-        f.write(HEADER.format(cls=cls, loc=loc, obj=obj) + body + FOOTER)
+    """Write one OpenFOAM file of a Stokes-drag case (the banner names this validation)."""
+    write_dict(path, cls, loc, obj, body, TITLE)
 
 
 def fine_half_widths(axes, h, margin):
@@ -67,16 +49,11 @@ def write_case(case, ar, flow, box, cpd, dt, end_time, u=0.02, nu=1.0,
     half = 0.5 * box
     if max(fine) >= half:
         sys.exit(f"caseWriter: the fine region {fine} does not fit in the box {box}")
-    os.makedirs(os.path.join(case, "system"), exist_ok=True)
-    cmd = [sys.executable if sys.executable else "/usr/bin/python3", REFINED_BOX_MESH,
-           "--box", *map(str, (-half, half, -half, half, -half, half)),
-           "--fine", *(f"{s:.12g}" for f in fine for s in (-f, f)),
-           "--h", f"{h:.12g}", "--growth", str(growth), "--max-ratio", str(max_ratio),
-           "--periodic", "x", "--periodic", "y", "--periodic", "z",
-           "-o", os.path.join(case, "system", "blockMeshDict")]
-    out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
-    with open(os.path.join(case, "log.refinedBoxMesh"), "w") as f:
-        f.write(" ".join(cmd) + "\n" + out)
+    refined_box_mesh(case, [
+        "--box", *map(str, (-half, half, -half, half, -half, half)),
+        "--fine", *(f"{s:.12g}" for f in fine for s in (-f, f)),
+        "--h", f"{h:.12g}", "--growth", str(growth), "--max-ratio", str(max_ratio),
+        "--periodic", "x", "--periodic", "y", "--periodic", "z"])
 
     # flow: 'x' (along the symmetry axis), 'y' (across it) or 'xy' (both at
     # once: Stokes flow is linear, the drag along x and along y are those of the

@@ -14,16 +14,18 @@ the leading coefficient b is universal (Hasimoto's lattice sum:
 correction hardly depends on the body's discretisation; the sphere at a
 second box size checks it.
 """
-import csv
 import math
 import os
 import sys
+from pathlib import Path
 
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
 import stokesDrag as sd  # noqa: E402
+from validationTools import read_csv, write_csv  # noqa: E402
 
 LABEL = {"sphere": "sphere", "prolate2": "prolate AR 2", "oblate0.5": "oblate AR 0.5"}
 DIRS = {"x": "along the axis", "y": "across the axis"}
@@ -86,8 +88,7 @@ def main(runs_csv, out):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    with open(runs_csv) as fh:
-        rows = list(csv.DictReader(fh))
+    rows = read_csv(runs_csv, missing_ok=False)
     md = []
     fits = box_fits(rows, sd.LAMBDA_BOX)
 
@@ -132,10 +133,7 @@ def main(runs_csv, out):
                              K_analytic=f"{ka:.6f}", error=f"{fit['K_inf'] / ka - 1:.5f}"))
     md.append("")
     if fit_rows:
-        with open(os.path.join(out, "boxFit.csv"), "w", newline="") as fh:
-            w = csv.DictWriter(fh, fieldnames=list(fit_rows[0]))
-            w.writeheader()
-            w.writerows(fit_rows)
+        write_csv(os.path.join(out, "boxFit.csv"), fit_rows)
 
     # sphere against Hasimoto
     sph = sorted((r for r in rows if r["body"] == "sphere" and f(r, "cpd") == 12),
@@ -183,10 +181,7 @@ def main(runs_csv, out):
                                  steps=steps, wall_s=r["wall_s"], cpu_s=r["cpu_s"]))
     md.append("")
     if res_rows:
-        with open(os.path.join(out, "resolution.csv"), "w", newline="") as fh:
-            w = csv.DictWriter(fh, fieldnames=list(res_rows[0]))
-            w.writeheader()
-            w.writerows(res_rows)
+        write_csv(os.path.join(out, "resolution.csv"), res_rows)
     with open(os.path.join(out, "table.md"), "w") as fh:
         fh.write("\n".join(md) + "\n")
     print("\n".join(md))

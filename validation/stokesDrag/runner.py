@@ -24,11 +24,16 @@ import math
 import os
 import re
 import subprocess
+import sys
 import time
+from pathlib import Path
 
 import numpy as np
 
 import caseWriter
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+from validationTools import mesh_cells  # noqa: E402
 
 
 def read_force(case):
@@ -95,8 +100,7 @@ def run_case(case, ar, flow, box, cpd, lam=1.0, u=0.02, dt1=0.01, tol1=1e-3, tol
     t_start = time.time()
     with open(os.path.join(case, "log.blockMesh"), "w") as out:
         subprocess.run(["blockMesh"], cwd=case, stdout=out, stderr=subprocess.STDOUT, check=True)
-    with open(os.path.join(case, "log.blockMesh")) as f:
-        cells = int(re.search(r"nCells:\s*(\d+)", f.read()).group(1))
+    cells = mesh_cells(case)
     comps = [i for i, d in enumerate("xy") if d in flow]
     if verbose:
         print(f"  {os.path.basename(case)}: {cells} cells, h = {h:.4g}, dt1 = {dt1:.4g}, "

@@ -22,15 +22,16 @@ rho_f = 1, superficial velocity u = 0.02 per direction (Re = 0.02-0.03).
 K = F/(6 pi mu r_eq u): the drag normalised by the equal-volume sphere.
 """
 import argparse
-import csv
 import math
 import os
-import socket
 import sys
 import time
+from pathlib import Path
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+from validationTools import cpu_seconds, provenance, read_csv, write_csv  # noqa: E402
 
 RESULTS = os.path.join(HERE, "results")
 RUNS_CSV = os.path.join(RESULTS, "runs.csv")
@@ -107,34 +108,6 @@ FIELDS = ["name", "body", "AR", "L_over_D", "cpd", "lambda", "dt", "cells", "ste
           "Kx_analytic", "Ky_analytic", "host", "date", "commit"]
 
 
-def provenance():
-    """The commit of the library the run used: HEAD, '+src' if src/ differs from it."""
-    import subprocess
-    top = os.path.abspath(os.path.join(HERE, "..", ".."))
-    try:
-        head = subprocess.run(["git", "-C", top, "rev-parse", "--short", "HEAD"], check=True,
-                              capture_output=True, text=True).stdout.strip()
-        dirty = subprocess.run(["git", "-C", top, "diff", "--quiet", "HEAD", "--", "src"]).returncode
-        return head + ("+src" if dirty else "")
-    except (OSError, subprocess.CalledProcessError):
-        return "unknown"
-
-
-def read_csv(path):
-    if not os.path.exists(path):
-        return []
-    with open(path) as f:
-        return list(csv.DictReader(f))
-
-
-def cpu_seconds(case):
-    """The solver's ExecutionTime (CPU seconds) from its log."""
-    import re
-    with open(os.path.join(case, "log.solver")) as f:
-        t = re.findall(r"ExecutionTime = (\S+) s", f.read())
-    return float(t[-1]) if t else float("nan")
-
-
 def do_run(args):
     import runner
     csv_path = os.path.join(RESULTS, "quick.csv") if args.quick else RUNS_CSV
@@ -186,16 +159,10 @@ def do_run(args):
                    Ky_gradP=f"{res['Fy_gradP'] / (6 * math.pi * 0.5 * 0.02):.6f}",
                    Kx_last=f"{res['Fx_last'] / (6 * math.pi * 0.5 * 0.02):.6f}",
                    Ky_last=f"{res['Fy_last'] / (6 * math.pi * 0.5 * 0.02):.6f}",
-                   Kx_analytic=f"{ka:.6f}", Ky_analytic=f"{kt:.6f}",
-                   host=socket.gethostname(), date=time.strftime("%Y-%m-%d %H:%M"),
-                   commit=provenance())
+                   Kx_analytic=f"{ka:.6f}", Ky_analytic=f"{kt:.6f}", **provenance())
         print(f"  -> K along the axis {row['Kx']}, across {row['Ky']} "
               f"(wall {row['wall_s']} s, CPU {row['cpu_s']} s)", flush=True)
-        rows = [r for r in read_csv(csv_path) if r["name"] != name] + [row]
-        with open(csv_path, "w", newline="") as f:
-            w = csv.DictWriter(f, fieldnames=FIELDS)
-            w.writeheader()
-            w.writerows(rows)
+        write_csv(csv_path, [r for r in read_csv(csv_path) if r["name"] != name] + [row], FIELDS)
     if args.quick:
         check_quick(csv_path)
 
@@ -226,10 +193,7 @@ def do_single(args):
                Kx=f"{res['Kx']:.6f}", Ky=f"{res['Ky']:.6f}", Kx_analytic=f"{ka:.6f}",
                Ky_analytic=f"{kt:.6f}", wall_s=f"{res['wall']:.1f}",
                cpu_s=f"{cpu_seconds(args.case):.1f}")
-    with open(os.path.join(args.case, "drag.csv"), "w", newline="") as fh:
-        w = csv.DictWriter(fh, fieldnames=list(row))
-        w.writeheader()
-        w.writerow(row)
+    write_csv(os.path.join(args.case, "drag.csv"), [row])
     print(", ".join(f"{k} {v}" for k, v in row.items()))
 
 

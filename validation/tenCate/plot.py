@@ -7,16 +7,19 @@ Reads results/<CASE>-<CPD>.h5 (+ .csv: cells, ranks, wall time, steps) and the r
 in ../shared/validation-data/tenCate2002 (or $TENCATE_DATA). Writes results/summary.md,
 results/summary.csv, tenCate_E1.png, tenCate_E4.png.
 """
-import csv
 import glob
 import os
 import sys
+from pathlib import Path
 
 import h5py
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+from validationTools import read_csv, write_csv  # noqa: E402
 
 here = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(__file__))
 data_dir = os.environ.get("TENCATE_DATA",
@@ -41,12 +44,8 @@ def load_run(path):
         t = np.asarray(f["time"][:], dtype=float)
         z = np.asarray(f["centre"][:, 0, 2], dtype=float)
         w = np.asarray(f["velocity"][:, 0, 2], dtype=float)
-    info = {}
-    csv_path = path[:-3] + ".csv"
-    if os.path.exists(csv_path):
-        with open(csv_path) as c:
-            info = next(csv.DictReader(c))
-    return t, z, w, info
+    rows = read_csv(path[:-3] + ".csv")    # cells, ranks, wall time, steps; optional
+    return t, z, w, rows[0] if rows else {}
 
 
 def main():
@@ -99,11 +98,7 @@ def main():
         fig.tight_layout()
         fig.savefig(os.path.join(here, f"tenCate_{name}.png"), dpi=110)
     rows.sort(key=lambda r: (r["case"], r["cpd"]))
-    keys = list(rows[0].keys())
-    with open(os.path.join(here, "results", "summary.csv"), "w", newline="") as f:
-        wr = csv.DictWriter(f, keys)
-        wr.writeheader()
-        wr.writerows(rows)
+    write_csv(os.path.join(here, "results", "summary.csv"), rows)
     with open(os.path.join(here, "results", "summary.md"), "w") as f:
         f.write("| case | cells/D | cells | ranks | steps | wall (s) | u_max (m/s) | ref. | u_max error "
                 "| rms u error / u_max | max gap error / d | compared up to t (s) |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n")

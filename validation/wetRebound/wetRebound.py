@@ -31,17 +31,19 @@ Collision: lubricationContact (e_dry 0.97, T_c = 10 dt, 10 sub-steps per contact
 activation 0.075 a, saturation 1e-3 a), penaltyRatio 1e-3, virtualMass 0.5.
 """
 import argparse
-import csv
 import math
 import os
-import re
 import shutil
-import socket
 import subprocess
 import sys
 import time
+from pathlib import Path
 
 import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+from validationTools import (cpu_seconds, provenance, read_csv,  # noqa: E402
+                             substitute_re, write_csv)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 RESULTS = os.path.join(HERE, "results")
@@ -64,27 +66,6 @@ FIELDS = ["name", "St_case", "cpd", "maxOverlap", "saturation", "cells", "dt", "
           "commit"]
 
 
-def provenance():
-    top = os.path.abspath(os.path.join(HERE, "..", ".."))
-    try:
-        head = subprocess.run(["git", "-C", top, "rev-parse", "--short", "HEAD"], check=True,
-                              capture_output=True, text=True).stdout.strip()
-        dirty = subprocess.run(["git", "-C", top, "diff", "--quiet", "HEAD", "--", "src"]).returncode
-        return head + ("+src" if dirty else "")
-    except (OSError, subprocess.CalledProcessError):
-        return "unknown"
-
-
-def sub(path, pattern, repl):
-    with open(path) as f:
-        s = f.read()
-    s2, n = re.subn(pattern, repl, s, flags=re.M)
-    if n == 0:
-        sys.exit(f"wetRebound: '{pattern}' not found in {path}")
-    with open(path, "w") as f:
-        f.write(s2)
-
-
 def write_case(case, name, cpd, end_factor=1.0, max_overlap=None, saturation=None):
     st, re_, rho_f, mu, d = CASES[name]
     a = d / 2
@@ -99,32 +80,32 @@ def write_case(case, name, cpd, end_factor=1.0, max_overlap=None, saturation=Non
     shutil.rmtree(case, ignore_errors=True)
     shutil.copytree(os.path.join(HERE, "caseTemplate"), case)
     mm = 1e3
-    sub(f"{case}/system/blockMeshDict", r"^// .*cells.*$",
-        f"// 4d x 4d x 5d, d = {d * mm:g} mm, {cpd} cells per d")
-    sub(f"{case}/system/blockMeshDict", r"\(9 0 0\) \(9 9 0\) \(0 9 0\)",
-        f"({lx * mm:g} 0 0) ({lx * mm:g} {lx * mm:g} 0) (0 {lx * mm:g} 0)")
-    sub(f"{case}/system/blockMeshDict",
-        r"\(0 0 12\) \(9 0 12\) \(9 9 12\) \(0 9 12\)",
-        f"(0 0 {lz * mm:g}) ({lx * mm:g} 0 {lz * mm:g}) ({lx * mm:g} {lx * mm:g} {lz * mm:g}) "
-        f"(0 {lx * mm:g} {lz * mm:g})")
-    sub(f"{case}/system/blockMeshDict", r"\(24 24 32\)", f"({nx} {nx} {nz})")
-    sub(f"{case}/system/controlDict", r"^endTime .*$", f"endTime         {end:.6g};")
-    sub(f"{case}/system/controlDict", r"^deltaT .*$", f"deltaT          {dt:.6g};")
-    sub(f"{case}/system/controlDict", r"^maxDeltaT .*$", f"maxDeltaT       {dt:.6g};")
-    sub(f"{case}/system/controlDict", r"^writeInterval .*$", "writeInterval   100000;")
-    sub(f"{case}/constant/transportProperties", r"^nu .*$",
-        f"nu              {mu / rho_f:.8g};   // mu/rho_f [m^2/s]")
+    bm = f"{case}/system/blockMeshDict"
+    substitute_re(bm, r"^// .*cells.*$", f"// 4d x 4d x 5d, d = {d * mm:g} mm, {cpd} cells per d")
+    substitute_re(bm, r"\(9 0 0\) \(9 9 0\) \(0 9 0\)",
+                  f"({lx * mm:g} 0 0) ({lx * mm:g} {lx * mm:g} 0) (0 {lx * mm:g} 0)")
+    substitute_re(bm, r"\(0 0 12\) \(9 0 12\) \(9 9 12\) \(0 9 12\)",
+                  f"(0 0 {lz * mm:g}) ({lx * mm:g} 0 {lz * mm:g}) "
+                  f"({lx * mm:g} {lx * mm:g} {lz * mm:g}) (0 {lx * mm:g} {lz * mm:g})")
+    substitute_re(bm, r"\(24 24 32\)", f"({nx} {nx} {nz})")
+    cd = f"{case}/system/controlDict"
+    substitute_re(cd, r"^endTime .*$", f"endTime         {end:.6g};")
+    substitute_re(cd, r"^deltaT .*$", f"deltaT          {dt:.6g};")
+    substitute_re(cd, r"^maxDeltaT .*$", f"maxDeltaT       {dt:.6g};")
+    substitute_re(cd, r"^writeInterval .*$", "writeInterval   100000;")
+    substitute_re(f"{case}/constant/transportProperties", r"^nu .*$",
+                  f"nu              {mu / rho_f:.8g};   // mu/rho_f [m^2/s]")
     p = f"{case}/constant/immersedBodiesProperties"
-    sub(p, r"^fluidDensity .*$", f"fluidDensity    {rho_f:g};")
-    sub(p, r"semiAxes .*$", f"semiAxes        ({a:g} {a:g} {a:g});")
-    sub(p, r"centre .*$", f"centre          ({lx / 2:g} {lx / 2:g} {a + 2 * d:g});")
-    sub(p, r"velocity .*$", f"velocity        (0 0 {-u:.6g});")
+    substitute_re(p, r"^fluidDensity .*$", f"fluidDensity    {rho_f:g};")
+    substitute_re(p, r"semiAxes .*$", f"semiAxes        ({a:g} {a:g} {a:g});")
+    substitute_re(p, r"centre .*$", f"centre          ({lx / 2:g} {lx / 2:g} {a + 2 * d:g});")
+    substitute_re(p, r"velocity .*$", f"velocity        (0 0 {-u:.6g});")
     if max_overlap is not None:
-        sub(p, r"^    restitution     0.97;$",
-            f"    restitution     0.97;\n    maxOverlap      {max_overlap:g};")
+        substitute_re(p, r"^    restitution     0.97;$",
+                      f"    restitution     0.97;\n    maxOverlap      {max_overlap:g};")
     if saturation is not None:
-        sub(p, r"^    restitution     0.97;$",
-            f"    restitution     0.97;\n    saturation      {saturation:g};")
+        substitute_re(p, r"^    restitution     0.97;$",
+                      f"    restitution     0.97;\n    saturation      {saturation:g};")
     return dict(dt=dt, cells=nx * nx * nz, U_release=u, end=end)
 
 
@@ -189,15 +170,6 @@ def measured(r):
                 J_hydro_out=f"{r['J_hydro_out']:.3f}", suction=f"{r['suction']:.3f}")
 
 
-def write_rows(path, fields, rows):
-    """Write rows (dicts) to the CSV file path with the columns fields."""
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w", newline="") as f:
-        wr = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
-        wr.writeheader()
-        wr.writerows(rows)
-
-
 def run_one(name, cpd, force, quick, max_overlap=None, saturation=None):
     out_csv = os.path.join(RESULTS, "quick.csv") if quick else RUNS_CSV
     tag = (f"{name}-c{cpd}" + (f"-ov{max_overlap:g}" if max_overlap is not None else "")
@@ -217,8 +189,7 @@ def run_one(name, cpd, force, quick, max_overlap=None, saturation=None):
     solver_log = os.path.join(case, "log.immersedSpheroidFoam")
     if rc != 0 or not os.path.exists(solver_log):
         sys.exit(f"wetRebound: {tag} failed (see {case}/log.*)")
-    with open(solver_log) as f:
-        cpu = re.findall(r"ExecutionTime = (\S+) s", f.read())
+    cpu = cpu_seconds(case, "log.immersedSpheroidFoam")
     h5 = os.path.join(case, "postProcessing", "immersedBodies", "bodies.h5")
     r = analyse(h5, name)
     master = math.exp(-35 / r["St"])
@@ -226,22 +197,15 @@ def run_one(name, cpd, force, quick, max_overlap=None, saturation=None):
                maxOverlap=f"{max_overlap if max_overlap is not None else 0.1:g}",
                saturation=f"{saturation if saturation is not None else 1e-3:g}", cells=info["cells"],
                dt=f"{info['dt']:.6g}", steps=len(r["t"]) - 1, U_release=f"{info['U_release']:.5g}",
-               wall_s=round(wall), cpu_s=round(float(cpu[-1])) if cpu else "",
-               host=socket.gethostname(), date=time.strftime("%Y-%m-%d %H:%M"),
-               commit=provenance(), **measured(r))
+               wall_s=round(wall), cpu_s=round(cpu) if math.isfinite(cpu) else "",
+               **provenance(), **measured(r))
     print(f"  U_in {r['U_in']:.4f} m/s, St {r['St']:.1f}, e {r['e']:.3f}, e/e_dry "
           f"{r['e'] / E_DRY:.3f} (master curve {master:.3f}), max overlap "
           f"{r['max_overlap_a']:.3f} a, wall {wall:.0f} s", flush=True)
     if not quick:
         shutil.copy(h5, os.path.join(RESULTS, f"{tag}.h5"))
-    write_rows(out_csv, FIELDS, [x for x in read_csv(out_csv) if x["name"] != tag] + [row])
-
-
-def read_csv(path):
-    if not os.path.exists(path):
-        return []
-    with open(path) as f:
-        return list(csv.DictReader(f))
+    write_csv(out_csv, [x for x in read_csv(out_csv) if x["name"] != tag] + [row], FIELDS,
+              ignore_extra=True)
 
 
 def do_plot():
@@ -319,7 +283,7 @@ def do_collect():
     for row in rows:
         name = row["name"].split("-c")[0]
         row.update(measured(analyse(os.path.join(RESULTS, f"{row['name']}.h5"), name)))
-    write_rows(RUNS_CSV, FIELDS, rows)
+    write_csv(RUNS_CSV, rows, FIELDS, ignore_extra=True)
     print(f"wetRebound: {len(rows)} runs re-analysed")
 
 

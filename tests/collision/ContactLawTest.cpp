@@ -1,9 +1,12 @@
+#include "collision/CollisionModel.hpp"
 #include "collision/ContactLaw.hpp"
 #include "collision/PlaneWall.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 using namespace collision;
 
@@ -78,4 +81,53 @@ TEST(PlaneWall, SpheroidDistanceMatchesSampling) {
   EXPECT_NEAR(w.normal.dot(d.wallPoint - w.point), 0, 1e-12);
   PlaneWall bad{"bad", Vec3::Zero(), Vec3(0, 0, 2)};
   EXPECT_THROW(bad.validate(), std::invalid_argument);
+}
+
+namespace {
+/// The message of validate() on settings with one value out of range; empty if it passed.
+std::string validateMessage(const CollisionSettings& s) {
+  try {
+    s.validate();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return std::string();
+}
+}  // namespace
+
+TEST(ContactLaw, OutOfRangeSettingsNameTheKeywordAndTheRangeOfTheConstants) {
+  struct Case {
+    const char* keyword;
+    void (*set)(CollisionSettings&);
+    Range range;
+  };
+  const Case cases[] = {
+      {"restitution", [](CollisionSettings& s) { s.contact.restitution = 1.5; },
+       ContactParameters::kRestitutionRange},
+      {"friction", [](CollisionSettings& s) { s.contact.friction = -0.1; },
+       ContactParameters::kFrictionRange},
+      {"maxOverlap", [](CollisionSettings& s) { s.maxOverlap = 0; },
+       CollisionSettings::kMaxOverlapRange},
+      {"subStepsPerContact", [](CollisionSettings& s) { s.subStepsPerContact = 3; },
+       CollisionSettings::kSubStepsPerContactRange},
+      {"distanceAccuracy", [](CollisionSettings& s) { s.distanceAccuracy = 0.5; },
+       CollisionSettings::kDistanceAccuracyRange},
+      {"maxSubSteps", [](CollisionSettings& s) { s.maxSubSteps = 0; },
+       CollisionSettings::kMaxSubStepsRange},
+      {"saturation", [](CollisionSettings& s) { s.lubrication.saturation = 1; },
+       LubricationParameters::kSaturationRange},
+      {"pairActivation", [](CollisionSettings& s) { s.lubrication.pairActivation = 2; },
+       CollisionSettings().lubrication.activationRange()},
+  };
+  // the defaults lie in their ranges
+  EXPECT_EQ(validateMessage(CollisionSettings()), "");
+  for (const Case& c : cases) {
+    CollisionSettings s;
+    c.set(s);
+    const std::string what = validateMessage(s);
+    EXPECT_NE(what.find(c.keyword), std::string::npos) << what;
+    EXPECT_NE(what.find(c.range.str()), std::string::npos) << c.keyword << ": " << what;
+  }
+  EXPECT_EQ(ContactParameters::kRestitutionRange.str(), "(0, 1]");
+  EXPECT_EQ(CollisionSettings::kMaxSubStepsRange.str(), "[1, 1e+09]");
 }

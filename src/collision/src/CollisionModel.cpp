@@ -48,12 +48,13 @@ const char* toString(CollisionMode mode) {
 }
 
 CollisionMode collisionModeFromString(const std::string& name) {
+  std::string allowed;
   for (CollisionMode m :
        {CollisionMode::none, CollisionMode::contact, CollisionMode::lubricationContact}) {
     if (name == toString(m)) return m;
+    allowed += (allowed.empty() ? "" : ", ") + std::string(toString(m));
   }
-  throw std::invalid_argument("collision: unknown model '" + name +
-                              "' (allowed: none, contact, lubricationContact)");
+  throw std::invalid_argument("collision: unknown model '" + name + "' (allowed: " + allowed + ")");
 }
 
 void CollisionSettings::validate() const {
@@ -61,13 +62,14 @@ void CollisionSettings::validate() const {
   lubrication.validate();
   require(std::isfinite(viscosity) && viscosity >= 0,
           "viscosity = " + std::to_string(viscosity) + " must be >= 0");
-  require(std::isfinite(maxOverlap) && maxOverlap > 0 && maxOverlap <= 0.5,
-          "maxOverlap = " + std::to_string(maxOverlap) + " must be in (0, 0.5]");
-  require(subStepsPerContact >= 4,
-          "subStepsPerContact = " + std::to_string(subStepsPerContact) + " must be >= 4");
-  require(std::isfinite(distanceAccuracy) && distanceAccuracy >= 1e-12 && distanceAccuracy <= 0.1,
-          "distanceAccuracy = " + std::to_string(distanceAccuracy) + " must be in [1e-12, 0.1]");
-  require(maxSubSteps >= 1, "maxSubSteps must be >= 1");
+  require(kMaxOverlapRange.contains(maxOverlap),
+          outOfRangeMessage("maxOverlap", maxOverlap, kMaxOverlapRange));
+  require(kSubStepsPerContactRange.contains(subStepsPerContact),
+          outOfRangeMessage("subStepsPerContact", subStepsPerContact, kSubStepsPerContactRange));
+  require(kDistanceAccuracyRange.contains(distanceAccuracy),
+          outOfRangeMessage("distanceAccuracy", distanceAccuracy, kDistanceAccuracyRange));
+  require(kMaxSubStepsRange.contains(maxSubSteps),
+          outOfRangeMessage("maxSubSteps", maxSubSteps, kMaxSubStepsRange));
 }
 
 CollisionModel::CollisionModel(const CollisionSettings& settings, std::vector<PlaneWall> walls)

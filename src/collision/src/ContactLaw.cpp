@@ -7,13 +7,13 @@
 namespace collision {
 
 void ContactParameters::validate() const {
-  if (!(std::isfinite(restitution) && restitution > 0 && restitution <= 1)) {
-    throw std::invalid_argument("contact: restitution = " + std::to_string(restitution) +
-                                " must be in (0, 1]");
+  if (!kRestitutionRange.contains(restitution)) {
+    throw std::invalid_argument("contact: " +
+                                outOfRangeMessage("restitution", restitution, kRestitutionRange));
   }
-  if (!(std::isfinite(friction) && friction >= 0)) {
-    throw std::invalid_argument("contact: friction = " + std::to_string(friction) +
-                                " must be >= 0");
+  if (!kFrictionRange.contains(friction)) {
+    throw std::invalid_argument("contact: " +
+                                outOfRangeMessage("friction", friction, kFrictionRange));
   }
 }
 

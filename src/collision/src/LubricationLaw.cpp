@@ -16,14 +16,14 @@ void require(bool ok, const std::string& what) {
 }  // namespace
 
 void LubricationParameters::validate() const {
-  require(std::isfinite(saturation) && saturation > 0 && saturation < 1,
-          "saturation = " + std::to_string(saturation) + " must be in (0, 1)");
-  require(std::isfinite(pairActivation) && pairActivation > saturation && pairActivation <= 1,
-          "pairActivation = " + std::to_string(pairActivation) +
-              " must be in (saturation, 1]");
-  require(std::isfinite(wallActivation) && wallActivation > saturation && wallActivation <= 1,
-          "wallActivation = " + std::to_string(wallActivation) +
-              " must be in (saturation, 1]");
+  require(kSaturationRange.contains(saturation),
+          outOfRangeMessage("saturation", saturation, kSaturationRange));
+  require(activationRange().contains(pairActivation),
+          outOfRangeMessage("pairActivation", pairActivation, activationRange()) +
+              " (above saturation)");
+  require(activationRange().contains(wallActivation),
+          outOfRangeMessage("wallActivation", wallActivation, activationRange()) +
+              " (above saturation)");
 }
 
 namespace {

@@ -110,4 +110,15 @@ Foam::scalar Foam::immersedSpheroids::readPositive
 }
 
 
+Foam::string Foam::immersedSpheroids::commaList(const UList<word>& words)
+{
+    string text;
+    forAll(words, i)
+    {
+        text += (i ? ", " : "") + words[i];
+    }
+    return text;
+}
+
+
 // ************************************************************************* //

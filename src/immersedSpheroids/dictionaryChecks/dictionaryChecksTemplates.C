@@ -87,4 +87,52 @@ T Foam::immersedSpheroids::readCheckedOrDefault
 }
 
 
+template<class T, class RangeType>
+T Foam::immersedSpheroids::readOptionalInRange
+(
+    const dictionary& dict,
+    const word& keyword,
+    const T& deflt,
+    const RangeType& range,
+    const string& what
+)
+{
+    const string expected =
+        what + " in " + range.str() + " (default " + Foam::name(deflt) + ")";
+    const T value = readCheckedOrDefault<T>(dict, keyword, deflt, expected);
+    if (!range.contains(scalar(value)))
+    {
+        entryError
+        (
+            dict, keyword,
+            "is " + Foam::name(value) + "; allowed: " + expected
+        );
+    }
+    return value;
+}
+
+
+template<class EnumType>
+EnumType Foam::immersedSpheroids::readOptionalEnum
+(
+    const dictionary& dict,
+    const word& keyword,
+    const Enum<EnumType>& names,
+    const EnumType deflt,
+    const string& what
+)
+{
+    const string expected =
+        commaList(names.names()) + " (default " + names.get(deflt) + "): "
+      + what;
+    const word value =
+        readCheckedOrDefault<word>(dict, keyword, names.get(deflt), expected);
+    if (!names.found(value))
+    {
+        entryError(dict, keyword, "is " + value + "; allowed: " + expected);
+    }
+    return names.get(value);
+}
+
+
 // ************************************************************************* //

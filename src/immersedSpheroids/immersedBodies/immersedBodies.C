@@ -12,6 +12,8 @@ License
 #include "dictionaryChecks.H"
 #include "packingBodies.H"
 #include "uniformDimensionedFields.H"
+#include "Enum.H"
+#include "collision/Range.hpp"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -19,6 +21,43 @@ namespace Foam
 {
     defineTypeNameAndDebug(immersedBodies, 0);
 }
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+// The defaults and ranges of the top-level settings (the members' initial
+// values and the reader's checks and messages)
+
+//- The name of the velocity field
+const char* const UNameDefault = "U";
+
+//- eta/deltaT, the penalty time scale over the time step
+constexpr scalar penaltyRatioDefault = 1e-3;
+constexpr collision::Range penaltyRatioRange{0, 1, true, false};
+
+//- Body sub-steps per fluid time step (the collision model may ask for more)
+constexpr label subStepsDefault = 1;
+constexpr collision::Range subStepsRange{1, 100000};
+
+//- The virtual-mass coefficient C_v of the stabilisation (0: off)
+constexpr scalar virtualMassDefault = 0.5;
+constexpr collision::Range virtualMassRange{0, 10};
+
+//- The penalty time scale in the cells on a wall patch
+enum class wallCellPenaltyType { soft, stiff };
+const Enum<wallCellPenaltyType> wallCellPenaltyNames
+({
+    { wallCellPenaltyType::soft, "soft" },
+    { wallCellPenaltyType::stiff, "stiff" },
+});
+constexpr wallCellPenaltyType wallCellPenaltyDefault = wallCellPenaltyType::soft;
+
+} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -219,10 +258,10 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         )
     ),
     fluidDensity_(0),
-    UName_("U"),
-    penaltyRatio_(1e-3),
-    subSteps_(1),
-    virtualMass_(0.5),
+    UName_(UNameDefault),
+    penaltyRatio_(penaltyRatioDefault),
+    subSteps_(subStepsDefault),
+    virtualMass_(virtualMassDefault),
     g_(Zero),
     cellRadius_(immersedSpheroids::cellRadii(mesh)),
     updateIndex_(-1),
@@ -231,7 +270,7 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     ddtScheme_(immersedSpheroids::ddtCoefficients::scheme::Euler),
     solveDdt_(),
     cellsFound_(false),
-    softWallCells_(true),
+    softWallCells_(wallCellPenaltyDefault == wallCellPenaltyType::soft),
     wallCell_(mesh.nCells(), false),
     cellSlot_(mesh.nCells(), -1),
     updateCpu_(0),
@@ -254,39 +293,24 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     );
     UName_ = readCheckedOrDefault<word>
     (
-        properties_, "U", "U", "the name of the velocity field"
+        properties_, "U", word(UNameDefault), "the name of the velocity field"
     );
-    penaltyRatio_ = readCheckedOrDefault<scalar>
+    penaltyRatio_ = readOptionalInRange<scalar>
     (
-        properties_, "penaltyRatio", 1e-3,
-        "eta/deltaT, the penalty time scale over the time step, in (0, 1]"
+        properties_, "penaltyRatio", penaltyRatioDefault, penaltyRatioRange,
+        "eta/deltaT, the penalty time scale over the time step,"
     );
-    if (penaltyRatio_ <= 0 || penaltyRatio_ > 1)
-    {
-        entryError
-        (
-            properties_, "penaltyRatio",
-            "must be in (0, 1] (eta/deltaT; 1e-3 is the default), got "
-          + Foam::name(penaltyRatio_)
-        );
-    }
-    const word wallCellPenalty = readCheckedOrDefault<word>
+    softWallCells_ =
     (
-        properties_, "wallCellPenalty", "soft",
-        "soft or stiff (default soft): the penalty time scale in the cells on"
-        " a wall patch"
-    );
-    if (wallCellPenalty != "soft" && wallCellPenalty != "stiff")
-    {
-        entryError
+        readOptionalEnum
         (
-            properties_, "wallCellPenalty",
-            "must be soft (the default: eta at least the fluid's own time scale"
-            " in the cells on a wall patch) or stiff (eta everywhere), got "
-          + wallCellPenalty
-        );
-    }
-    softWallCells_ = (wallCellPenalty == "soft");
+            properties_, "wallCellPenalty", wallCellPenaltyNames,
+            wallCellPenaltyDefault,
+            "the penalty time scale in the cells on a wall patch: soft, eta"
+            " at least the fluid's own time scale there; stiff, eta everywhere"
+        )
+     == wallCellPenaltyType::soft
+    );
     forAll(mesh.boundaryMesh(), patchi)
     {
         const polyPatch& pp = mesh.boundaryMesh()[patchi];
@@ -299,33 +323,16 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         }
     }
 
-    subSteps_ = readCheckedOrDefault<label>
+    subSteps_ = readOptionalInRange<label>
     (
-        properties_, "subSteps", 1, "the number of body sub-steps per time step, >= 1"
+        properties_, "subSteps", subStepsDefault, subStepsRange,
+        "the number of body sub-steps per time step, an integer"
     );
-    if (subSteps_ < 1 || subSteps_ > 100000)
-    {
-        entryError
-        (
-            properties_, "subSteps",
-            "must be an integer in [1, 100000], got " + Foam::name(subSteps_)
-        );
-    }
-
-    virtualMass_ = readCheckedOrDefault<scalar>
+    virtualMass_ = readOptionalInRange<scalar>
     (
-        properties_, "virtualMass", 0.5,
-        "the virtual-mass coefficient C_v of the stabilisation, in [0, 10] (default 0.5; 0: off)"
+        properties_, "virtualMass", virtualMassDefault, virtualMassRange,
+        "the virtual-mass coefficient C_v of the stabilisation (0: off)"
     );
-    if (virtualMass_ < 0 || virtualMass_ > 10)
-    {
-        entryError
-        (
-            properties_, "virtualMass",
-            "must be in [0, 10] (0: off; 0.5 is the default), got "
-          + Foam::name(virtualMass_)
-        );
-    }
 
     readBodies();
     readGravity();
@@ -359,7 +366,11 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     {
         Info<< ", virtual mass C_v " << virtualMass_;
     }
-    Info<< ", wall cells " << (softWallCells_ ? "soft" : "stiff");
+    Info<< ", wall cells "
+        << wallCellPenaltyNames
+           [
+               softWallCells_ ? wallCellPenaltyType::soft : wallCellPenaltyType::stiff
+           ];
     if (mag(g_) > 0)
     {
         Info<< ", g " << g_;

@@ -247,9 +247,9 @@ void Foam::immersedBodies::assemblePenalty
         // flux, and a stiff penalty turns the conflict into a pressure of
         // order rho_f U dx/eta, 1/penaltyRatio times the fluid's inertial
         // scale, that pushes an approaching body off and sucks a receding
-        // one back (0.3-0.5 of the collision force in validation/wetRebound).
-        // There eta is at least the fluid's own time scale dt/c (the
-        // strength of direct forcing): U_s is imposed over about a step
+        // one back (measured in docs/immersedBodies.md, wall cells). There
+        // eta is at least the fluid's own time scale dt/c (the strength of
+        // direct forcing): U_s is imposed over about a step
         const scalar alpha = min(penaltyAlphaSum_[s], scalar(1));
         const scalar etaCell =
             softWallCells_ && wallCell_[penaltyCells_[s]]

@@ -10,6 +10,7 @@ License
 #include "dictionaryChecks.H"
 
 #include "bodyOutput/bodyOutput.hpp"
+#include "collision/Range.hpp"
 
 #include <stdexcept>
 
@@ -19,6 +20,17 @@ namespace
 {
 
 using namespace Foam;
+
+// The defaults and ranges of the output keywords (the members' initial values
+// and the reader's checks and messages)
+constexpr bool timeSeriesDefault = true;
+constexpr bool surfacesDefault = true;
+constexpr bool solidFractionDefault = false;
+constexpr label surfaceSubdivisionsDefault = 3;
+constexpr collision::Range surfaceSubdivisionsRange
+{
+    0, bodyoutput::kMaxSurfaceSubdivisions
+};
 
 std::array<double, 3> toArray(const vector& v)
 {
@@ -78,10 +90,10 @@ Foam::immersedBodiesOutput::immersedBodiesOutput
 )
 :
     bodies_(bodies),
-    timeSeries_(true),
-    surfaces_(true),
-    surfaceSubdivisions_(3),
-    solidFraction_(false),
+    timeSeries_(timeSeriesDefault),
+    surfaces_(surfacesDefault),
+    surfaceSubdivisions_(surfaceSubdivisionsDefault),
+    solidFraction_(solidFractionDefault),
     dir_(bodies.mesh().time().globalPath()/"postProcessing"/"immersedBodies")
 {
     using namespace immersedSpheroids;
@@ -92,27 +104,21 @@ Foam::immersedBodiesOutput::immersedBodiesOutput
         wordList({"timeSeries", "surfaces", "surfaceSubdivisions", "solidFraction"})
     );
     const string yesNo("yes or no (a switch)");
-    timeSeries_ = readCheckedOrDefault<Switch>(dict, "timeSeries", true, yesNo);
-    surfaces_ = readCheckedOrDefault<Switch>(dict, "surfaces", true, yesNo);
-    solidFraction_ = readCheckedOrDefault<Switch>(dict, "solidFraction", false, yesNo);
-    surfaceSubdivisions_ = readCheckedOrDefault<label>
+    timeSeries_ =
+        readCheckedOrDefault<Switch>(dict, "timeSeries", timeSeriesDefault, yesNo);
+    surfaces_ =
+        readCheckedOrDefault<Switch>(dict, "surfaces", surfacesDefault, yesNo);
+    solidFraction_ = readCheckedOrDefault<Switch>
     (
-        dict, "surfaceSubdivisions", 3,
-        "the subdivisions of the icosahedron triangulating each surface"
-        " (20 x 4^s triangles), an integer in [0, 8]"
+        dict, "solidFraction", solidFractionDefault, yesNo
     );
-    if
+    surfaceSubdivisions_ = readOptionalInRange<label>
     (
-        surfaceSubdivisions_ < 0
-     || surfaceSubdivisions_ > bodyoutput::kMaxSurfaceSubdivisions
-    )
-    {
-        entryError
-        (
-            dict, "surfaceSubdivisions",
-            "must be an integer in [0, 8], got " + Foam::name(surfaceSubdivisions_)
-        );
-    }
+        dict, "surfaceSubdivisions", surfaceSubdivisionsDefault,
+        surfaceSubdivisionsRange,
+        "the subdivisions of the icosahedron triangulating each surface"
+        " (20 x 4^s triangles), an integer"
+    );
 }
 
 

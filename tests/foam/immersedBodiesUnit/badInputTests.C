@@ -12,6 +12,7 @@ Description
 
 #include "immersedBodiesTests.H"
 #include "immersedBodies.H"
+#include "collision/CollisionModel.hpp"
 #include <fstream>
 
 using namespace testChecks;
@@ -163,6 +164,58 @@ void immersedBodiesTests::testBadInput(const Time& runTime, const fvMesh& mesh)
         construct("wallCellPenalty hard; " + withBody(goodBody)),
         {"'wallCellPenalty'", "soft", "stiff", "hard", fname},
         "wallCellPenalty not soft or stiff"
+    );
+    // Collision settings out of range: the message shows the range of the
+    // collision core's constants, which validate() checks too
+    expectFatalIOError
+    (
+        construct
+        (
+            "collision { type contact; maxOverlap 0.7; } " + withBody(goodBody)
+        ),
+        {
+            "'maxOverlap'",
+            collision::CollisionSettings::kMaxOverlapRange.str(),
+            fname
+        },
+        "collision maxOverlap out of range"
+    );
+    expectFatalIOError
+    (
+        construct
+        (
+            "collision { type contact; subStepsPerContact 2; } "
+          + withBody(goodBody)
+        ),
+        {
+            "'subStepsPerContact'",
+            collision::CollisionSettings::kSubStepsPerContactRange.str(),
+            fname
+        },
+        "collision subStepsPerContact out of range"
+    );
+    expectFatalIOError
+    (
+        construct
+        (
+            "collision { type lubricationContact; viscosity 1e-3;"
+            " pairActivation 2; } " + withBody(goodBody)
+        ),
+        {
+            "'pairActivation'",
+            collision::LubricationParameters().activationRange().str(),
+            fname
+        },
+        "collision pairActivation out of range"
+    );
+    expectFatalIOError
+    (
+        construct
+        (
+            "collision { type lubrication; } " + withBody(goodBody)
+        ),
+        {"lubrication", "contact, lubricationContact, none", fname},
+        "unknown collision type lists the allowed types"
     );
     expectFatalIOError
     (

@@ -47,20 +47,25 @@ const char* toString(CollisionMode mode);
 /// @throws std::invalid_argument naming the allowed values
 CollisionMode collisionModeFromString(const std::string& name);
 
+/// The defaults are the member initialisers, the allowed values the k...Range constants.
 struct CollisionSettings {
   CollisionMode mode = CollisionMode::contact;
   ContactParameters contact;
   LubricationParameters lubrication;
   /// dynamic viscosity mu of the fluid (lubrication; >= 0)
   Scalar viscosity = 0;
-  /// largest overlap allowed, as a fraction of the pair's smallest semi-axis, in (0, 0.5]
+  /// largest overlap allowed, as a fraction of the pair's smallest semi-axis, in kMaxOverlapRange
   Scalar maxOverlap = 0.1;
-  /// body sub-steps per contact time, >= 4
+  static constexpr Range kMaxOverlapRange{0, 0.5, true, false};
+  /// body sub-steps per contact time, an integer in kSubStepsPerContactRange
   int subStepsPerContact = 10;
-  /// eps_d / (smallest Gaussian curvature radius of the pair), in [1e-12, 1e-1]
+  static constexpr Range kSubStepsPerContactRange{4, 10000};
+  /// eps_d / (smallest Gaussian curvature radius of the pair), in kDistanceAccuracyRange
   Scalar distanceAccuracy = 1e-5;
-  /// largest number of sub-steps subSteps() may ask for
+  static constexpr Range kDistanceAccuracyRange{1e-12, 0.1};
+  /// largest number of sub-steps subSteps() may ask for, an integer in kMaxSubStepsRange
   int maxSubSteps = 100000;
+  static constexpr Range kMaxSubStepsRange{1, 1e9};
   /// the film correction (step 7) for pairs closer than the bodies' filmGap (needs viscosity > 0)
   bool filmStabilisation = true;
 

@@ -27,15 +27,19 @@
 #ifndef COLLISION_CONTACTLAW_HPP
 #define COLLISION_CONTACTLAW_HPP
 
+#include "collision/Range.hpp"
 #include "collision/Types.hpp"
 
 namespace collision {
 
+/// The defaults are the member initialisers, the allowed values the k...Range constants.
 struct ContactParameters {
-  /// dry coefficient of restitution e, in (0, 1]
+  /// dry coefficient of restitution e, in kRestitutionRange
   Scalar restitution = 0.97;
-  /// Coulomb friction coefficient mu >= 0 (0: frictionless)
+  static constexpr Range kRestitutionRange{0, 1, true, false};
+  /// Coulomb friction coefficient mu, in kFrictionRange (0: frictionless)
   Scalar friction = 0;
+  static constexpr Range kFrictionRange{0, 100};
 
   /// @throws std::invalid_argument naming the parameter and its allowed range
   void validate() const;

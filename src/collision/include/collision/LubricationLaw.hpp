@@ -25,17 +25,25 @@
 #ifndef COLLISION_LUBRICATIONLAW_HPP
 #define COLLISION_LUBRICATIONLAW_HPP
 
+#include "collision/Range.hpp"
 #include "collision/Types.hpp"
 
 namespace collision {
 
+/// The defaults are the member initialisers, the allowed values the k... constants.
 struct LubricationParameters {
-  /// xi_act = 2 h/(a1 + a2) below which the pair correction acts (> xi_sat)
+  /// xi_act = 2 h/(a1 + a2) below which the pair correction acts, in activationRange()
   Scalar pairActivation = 0.025;
-  /// eps_act = h/a below which the wall correction acts (> saturation)
+  /// eps_act = h/a below which the wall correction acts, in activationRange()
   Scalar wallActivation = 0.075;
-  /// xi_sat, eps_sat: the correction is frozen below this gap ratio (> 0)
+  /// xi_sat, eps_sat: the correction is frozen below this gap ratio, in kSaturationRange
   Scalar saturation = 1e-3;
+  static constexpr Range kSaturationRange{0, 1, true, true};
+  /// the largest activation gap ratio
+  static constexpr Scalar kMaxActivation = 1;
+
+  /// (saturation, kMaxActivation]: the allowed activation gap ratios
+  Range activationRange() const { return Range{saturation, kMaxActivation, true, false}; }
 
   /// @throws std::invalid_argument naming the parameter and its allowed range
   void validate() const;

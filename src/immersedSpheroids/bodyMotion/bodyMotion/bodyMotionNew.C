@@ -18,7 +18,12 @@ Foam::autoPtr<Foam::bodyMotion> Foam::bodyMotion::New(const dictionary& dict)
         (
             dict,
             "type",
-            "a motion type (fixed, prescribed, free, freeTranslation, freeRotation)"
+            "a motion type ("
+          + immersedSpheroids::commaList
+            (
+                dictionaryConstructorTablePtr_->sortedToc()
+            )
+          + ")"
         )
     );
 

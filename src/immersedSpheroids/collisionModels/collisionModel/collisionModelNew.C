@@ -19,12 +19,10 @@ Foam::autoPtr<Foam::collisionModel> Foam::collisionModel::New
 {
     using namespace immersedSpheroids;
 
-    const wordList types(dictionaryConstructorTablePtr_->sortedToc());
-    word allowed;
-    for (const word& t : types)
-    {
-        allowed += (allowed.empty() ? "" : ", ") + t;
-    }
+    const string allowed
+    (
+        commaList(dictionaryConstructorTablePtr_->sortedToc())
+    );
 
     if (!properties.found("collision"))
     {
@@ -52,12 +50,15 @@ Foam::autoPtr<Foam::collisionModel> Foam::collisionModel::New
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
     if (!cstrIter.found())
     {
-        entryError
+        FatalIOErrorInLookup
         (
-            dict, "type",
-            "is '" + modelType + "', which is not a collision model; allowed: "
-          + allowed
-        );
+            dict,
+            "collisionModel",
+            modelType,
+            *dictionaryConstructorTablePtr_
+        )   << "Entry 'type' in dictionary " << dict.name() << " is '"
+            << modelType << "'; allowed: " << allowed.c_str() << nl
+            << exit(FatalIOError);
     }
     return cstrIter()(dict, mesh, fluidDensity);
 }

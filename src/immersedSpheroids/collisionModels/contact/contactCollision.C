@@ -9,6 +9,7 @@ License
 #include "immersedBody.H"
 #include "coreConversions.H"
 #include "collision/BodySet.hpp"
+#include "collision/Range.hpp"
 #include "planeWalls.H"
 #include "dictionaryChecks.H"
 #include "IOdictionary.H"
@@ -39,29 +40,9 @@ namespace
 
 using namespace Foam;
 
-//- An optional scalar in [lo, hi]
-scalar optionalInRange
-(
-    const dictionary& dict,
-    const word& keyword,
-    const scalar deflt,
-    const scalar lo,
-    const scalar hi,
-    const string& expected
-)
-{
-    const scalar v =
-        immersedSpheroids::readCheckedOrDefault<scalar>(dict, keyword, deflt, expected);
-    if (!(v >= lo && v <= hi))
-    {
-        immersedSpheroids::entryError
-        (
-            dict, keyword,
-            "is " + Foam::name(v) + "; allowed: " + expected
-        );
-    }
-    return v;
-}
+//- The contact time over the fluid time step, T_c/deltaT: default and range
+constexpr scalar contactStepsDefault = 10;
+constexpr collision::Range contactStepsRange{1e-3, 1e6};
 
 //- The film gap: the filmGap entry, else the smallest cell size of the mesh
 //  (the cube root of the smallest cell volume, over all ranks)
@@ -163,52 +144,60 @@ scalar readViscosity
     }
     checkKeywords(dict, allowed);
 
-    collision::CollisionSettings s;
+    // The defaults are those of a default-constructed settings struct, the
+    // ranges its constants: validate() checks the same numbers
+    using Settings = collision::CollisionSettings;
+    using Contact = collision::ContactParameters;
+    using Lubrication = collision::LubricationParameters;
+    const Settings defaults;
+
+    Settings s;
     s.mode = mode;
-    s.contact.restitution = optionalInRange
+    s.contact.restitution = readOptionalInRange<scalar>
     (
-        dict, "restitution", 0.97, 1e-6, 1,
-        "the dry restitution coefficient e in (0, 1] (default 0.97)"
+        dict, "restitution", defaults.contact.restitution,
+        Contact::kRestitutionRange, "the dry restitution coefficient e"
     );
-    s.contact.friction = optionalInRange
+    s.contact.friction = readOptionalInRange<scalar>
     (
-        dict, "friction", 0, 0, 100,
-        "the Coulomb friction coefficient in [0, 100] (default 0)"
+        dict, "friction", defaults.contact.friction,
+        Contact::kFrictionRange, "the Coulomb friction coefficient"
     );
     s.subStepsPerContact = label
     (
-        optionalInRange
+        readOptionalInRange<scalar>
         (
-            dict, "subStepsPerContact", 10, 4, 10000,
-            "the body sub-steps per contact time, an integer in [4, 10000]"
-            " (default 10)"
+            dict, "subStepsPerContact", defaults.subStepsPerContact,
+            Settings::kSubStepsPerContactRange,
+            "the body sub-steps per contact time, an integer"
         )
     );
-    s.maxOverlap = optionalInRange
+    s.maxOverlap = readOptionalInRange<scalar>
     (
-        dict, "maxOverlap", 0.1, 1e-6, 0.5,
-        "the largest overlap over the smallest semi-axis in (0, 0.5]"
-        " (default 0.1)"
+        dict, "maxOverlap", defaults.maxOverlap, Settings::kMaxOverlapRange,
+        "the largest overlap over the smallest semi-axis"
     );
-    s.distanceAccuracy = optionalInRange
+    s.distanceAccuracy = readOptionalInRange<scalar>
     (
-        dict, "distanceAccuracy", 1e-5, 1e-12, 0.1,
-        "eps_d over the smallest Gaussian curvature radius of the pair, in"
-        " [1e-12, 0.1] (default 1e-5)"
+        dict, "distanceAccuracy", defaults.distanceAccuracy,
+        Settings::kDistanceAccuracyRange,
+        "eps_d over the smallest Gaussian curvature radius of the pair"
     );
     s.maxSubSteps = label
     (
-        optionalInRange
+        readOptionalInRange<scalar>
         (
-            dict, "maxSubSteps", 100000, 1, 1e9,
-            "the largest number of body sub-steps per fluid step, in [1, 1e9]"
-            " (default 100000)"
+            dict, "maxSubSteps", defaults.maxSubSteps,
+            Settings::kMaxSubStepsRange,
+            "the largest number of body sub-steps per fluid step"
         )
     );
     s.filmStabilisation = readCheckedOrDefault<bool>
     (
-        dict, "filmStabilisation", true,
-        "yes or no (default yes): the film correction for the pairs closer than filmGap"
+        dict, "filmStabilisation", defaults.filmStabilisation,
+        string("yes or no (default ")
+      + (defaults.filmStabilisation ? "yes" : "no")
+      + "): the film correction for the pairs closer than filmGap"
     );
     if (!s.filmStabilisation && dict.found("filmGap"))
     {
@@ -233,22 +222,23 @@ scalar readViscosity
     }
     if (lubrication)
     {
-        s.lubrication.saturation = optionalInRange
+        s.lubrication.saturation = readOptionalInRange<scalar>
         (
-            dict, "saturation", 1e-3, 1e-12, 0.5,
-            "the saturation gap ratio eps_sat in (0, 0.5] (default 1e-3)"
+            dict, "saturation", defaults.lubrication.saturation,
+            Lubrication::kSaturationRange,
+            "the saturation gap ratio eps_sat"
         );
-        s.lubrication.pairActivation = optionalInRange
+        s.lubrication.pairActivation = readOptionalInRange<scalar>
         (
-            dict, "pairActivation", 0.025, s.lubrication.saturation*(1 + 1e-12), 1,
-            "the pair activation gap ratio 2h/(R1 + R2) in (saturation, 1]"
-            " (default 0.025)"
+            dict, "pairActivation", defaults.lubrication.pairActivation,
+            s.lubrication.activationRange(),
+            "the pair activation gap ratio 2h/(R1 + R2), above saturation,"
         );
-        s.lubrication.wallActivation = optionalInRange
+        s.lubrication.wallActivation = readOptionalInRange<scalar>
         (
-            dict, "wallActivation", 0.075, s.lubrication.saturation*(1 + 1e-12), 1,
-            "the wall activation gap ratio h/R in (saturation, 1]"
-            " (default 0.075)"
+            dict, "wallActivation", defaults.lubrication.wallActivation,
+            s.lubrication.activationRange(),
+            "the wall activation gap ratio h/R, above saturation,"
         );
     }
     try
@@ -278,11 +268,10 @@ Foam::collisionModels::contact::contact
     collisionModel(mesh),
     contactSteps_
     (
-        optionalInRange
+        immersedSpheroids::readOptionalInRange<scalar>
         (
-            dict, "contactSteps", 10, 1e-3, 1e6,
-            "the contact time over the fluid time step, T_c/deltaT, in"
-            " [1e-3, 1e6] (default 10)"
+            dict, "contactSteps", contactStepsDefault, contactStepsRange,
+            "the contact time over the fluid time step, T_c/deltaT,"
         )
     ),
     model_
@@ -420,8 +409,8 @@ void Foam::collisionModels::contact::report(const label nSubSteps)
 void Foam::collisionModels::contact::readHistory(const dictionary& dict)
 {
     // (first second warm dx dy dz contactTime springForce stiffness overlap
-    // fx fy fz); the 10-entry form of earlier versions has no contact force
-    // (zero), the 7-entry form starts the spring from k delta
+    // fx fy fz); a 10-entry record has no contact force (zero), a 7-entry
+    // one starts the spring from k delta
     const List<scalarList> records =
         immersedSpheroids::readCheckedOrDefault<List<scalarList>>
         (

@@ -6,12 +6,9 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "immersedBodies.H"
-#include "wallPolyPatch.H"
 #include "processCpuTime.H"
-#include "cellSolidFraction.H"
 #include "dictionaryChecks.H"
 #include "packingBodies.H"
-#include "uniformDimensionedFields.H"
 #include "Enum.H"
 #include "collision/Range.hpp"
 
@@ -139,48 +136,6 @@ void Foam::immersedBodies::readBodies()
 }
 
 
-void Foam::immersedBodies::readGravity()
-{
-    g_ = Zero;
-    bool needed = false;
-    for (const immersedBody& body : bodies_)
-    {
-        needed = needed || body.motion().isFreeInTranslation();
-    }
-    if (!needed)
-    {
-        return;
-    }
-
-    IOobject gIO
-    (
-        "g",
-        mesh_.time().constant(),
-        mesh_,
-        IOobject::MUST_READ,
-        IOobject::NO_WRITE
-    );
-    if (!gIO.typeHeaderOk<uniformDimensionedVectorField>(true))
-    {
-        FatalErrorInFunction
-            << "A body is free in translation, which needs gravity: the file "
-            << gIO.objectPath() << " (uniformDimensionedVectorField g, e.g."
-            << " value (0 0 -9.81);) is missing" << nl
-            << exit(FatalError);
-    }
-    const uniformDimensionedVectorField g(gIO);
-    if (g.dimensions() != dimAcceleration)
-    {
-        FatalIOErrorInFunction(gIO.objectPath())
-            << "Entry 'dimensions' of " << gIO.objectPath()
-            << " must be those of an acceleration " << dimAcceleration
-            << ", not " << g.dimensions() << nl
-            << exit(FatalIOError);
-    }
-    g_ = g.value();
-}
-
-
 bool Foam::immersedBodies::readRestartState()
 {
     if (!headerOk())
@@ -192,7 +147,10 @@ bool Foam::immersedBodies::readRestartState()
     close();
 
     using namespace immersedSpheroids;
-    eta_ = readCheckedOrDefault<scalar>(dict, "eta", 0, "the penalty time scale [s]");
+    restartEta_ = readCheckedOrDefault<scalar>
+    (
+        dict, "eta", 0, "the penalty time scale [s]"
+    );
     lastDeltaT_ = readCheckedOrDefault<scalar>
     (
         dict, "deltaT", 0, "the time step of the last update [s]"
@@ -223,7 +181,7 @@ bool Foam::immersedBodies::readRestartState()
         }
         body.readState(states.subDict(body.name()));
     }
-    collision_->readHistory(dict);
+    integrator_->collision().readHistory(dict);
     return true;
 }
 
@@ -260,21 +218,12 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     fluidDensity_(0),
     UName_(UNameDefault),
     penaltyRatio_(penaltyRatioDefault),
-    subSteps_(subStepsDefault),
-    virtualMass_(virtualMassDefault),
-    g_(Zero),
-    cellRadius_(immersedSpheroids::cellRadii(mesh)),
     updateIndex_(-1),
-    eta_(0),
+    restartEta_(0),
     lastDeltaT_(0),
     ddtScheme_(immersedSpheroids::ddtCoefficients::scheme::Euler),
     solveDdt_(),
-    cellsFound_(false),
-    softWallCells_(wallCellPenaltyDefault == wallCellPenaltyType::soft),
-    wallCell_(mesh.nCells(), false),
-    cellSlot_(mesh.nCells(), -1),
-    updateCpu_(0),
-    penaltyCpu_(0)
+    updateCpu_(0)
 {
     using namespace immersedSpheroids;
 
@@ -300,43 +249,37 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         properties_, "penaltyRatio", penaltyRatioDefault, penaltyRatioRange,
         "eta/deltaT, the penalty time scale over the time step,"
     );
-    softWallCells_ =
+    const wallCellPenaltyType wallCells = readOptionalEnum
     (
-        readOptionalEnum
-        (
-            properties_, "wallCellPenalty", wallCellPenaltyNames,
-            wallCellPenaltyDefault,
-            "the penalty time scale in the cells on a wall patch: soft, eta"
-            " at least the fluid's own time scale there; stiff, eta everywhere"
-        )
-     == wallCellPenaltyType::soft
+        properties_, "wallCellPenalty", wallCellPenaltyNames,
+        wallCellPenaltyDefault,
+        "the penalty time scale in the cells on a wall patch: soft, eta"
+        " at least the fluid's own time scale there; stiff, eta everywhere"
     );
-    forAll(mesh.boundaryMesh(), patchi)
-    {
-        const polyPatch& pp = mesh.boundaryMesh()[patchi];
-        if (isA<wallPolyPatch>(pp))
-        {
-            for (const label celli : pp.faceCells())
-            {
-                wallCell_[celli] = true;
-            }
-        }
-    }
+    forcing_.reset
+    (
+        new penaltyForcing(mesh, wallCells == wallCellPenaltyType::soft)
+    );
 
-    subSteps_ = readOptionalInRange<label>
+    const label subSteps = readOptionalInRange<label>
     (
         properties_, "subSteps", subStepsDefault, subStepsRange,
         "the number of body sub-steps per time step, an integer"
     );
-    virtualMass_ = readOptionalInRange<scalar>
+    const scalar virtualMass = readOptionalInRange<scalar>
     (
         properties_, "virtualMass", virtualMassDefault, virtualMassRange,
         "the virtual-mass coefficient C_v of the stabilisation (0: off)"
     );
 
     readBodies();
-    readGravity();
-    collision_ = collisionModel::New(properties_, mesh_, fluidDensity_);
+    integrator_.reset
+    (
+        new bodyIntegrator
+        (
+            mesh, properties_, bodies_, fluidDensity_, subSteps, virtualMass
+        )
+    );
     ddtScheme_ = immersedSpheroids::ddtCoefficients::read(mesh, UName_);
 
     if (!readRestartState())
@@ -347,8 +290,6 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
             body.motion().initialise(body.state(), t);
         }
     }
-
-    bodySlots_.setSize(bodies_.size());
 
     output_.reset
     (
@@ -361,19 +302,15 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
 
     Info<< "immersedBodies: " << bodies_.size() << " bodies, rho_f "
         << fluidDensity_ << ", eta = " << penaltyRatio_ << " deltaT, "
-        << subSteps_ << " sub-step(s) per step";
-    if (virtualMass_ > 0)
+        << subSteps << " sub-step(s) per step";
+    if (virtualMass > 0)
     {
-        Info<< ", virtual mass C_v " << virtualMass_;
+        Info<< ", virtual mass C_v " << virtualMass;
     }
-    Info<< ", wall cells "
-        << wallCellPenaltyNames
-           [
-               softWallCells_ ? wallCellPenaltyType::soft : wallCellPenaltyType::stiff
-           ];
-    if (mag(g_) > 0)
+    Info<< ", wall cells " << wallCellPenaltyNames[wallCells];
+    if (mag(integrator_->g()) > 0)
     {
-        Info<< ", g " << g_;
+        Info<< ", g " << integrator_->g();
     }
     Info<< endl;
 }
@@ -416,22 +353,22 @@ void Foam::immersedBodies::update(const volVectorField& U)
     if (updateIndex_ < 0)
     {
         // first update of this run: the cells and the penalty of the solve
-        // that produced U (none at the start of a fresh run: eta_ = 0)
-        updateCells();
-        assemblePenalty(eta_, lastDeltaT_, solveDdt_.c);
+        // that produced U (none at the start of a fresh run: eta 0)
+        forcing_->updateCells(bodies_);
+        forcing_->assemble(bodies_, restartEta_, lastDeltaT_, solveDdt_.c);
         output_->start(t0);
     }
 
-    computeForces(U);
-    advanceBodies(t0, dt);
-    updateCells();
+    loads_.update(bodies_, *forcing_, U, fluidDensity_, solveDdt_, lastDeltaT_, debug);
+    integrator_->advance(bodies_, t0, dt);
+    forcing_->updateCells(bodies_);
 
     const immersedSpheroids::ddtCoefficients ddt =
         immersedSpheroids::ddtCoefficients::of
         (
             ddtScheme_, time.timeIndex(), dt, time.deltaT0Value()
         );
-    assemblePenalty(penaltyRatio_*dt, dt, ddt.c);
+    forcing_->assemble(bodies_, penaltyRatio_*dt, dt, ddt.c);
     solveDdt_ = ddt;
     lastDeltaT_ = dt;
     updateIndex_ = time.timeIndex();
@@ -439,13 +376,52 @@ void Foam::immersedBodies::update(const volVectorField& U)
     output_->append(time.value());
 
     // the module's cost: this update, and the penalty terms of the last step
-    const scalar lastPenaltyCpu = penaltyCpu_;
-    penaltyCpu_ = 0;
+    const scalar lastPenaltyCpu = forcing_->cpu();
+    forcing_->resetCpu();
     updateCpu_ = (immersedSpheroids::processCpuTime() - cpu0);
     Info<< "immersedBodies: " << bodies_.size() << " bodies, "
-        << returnReduce(penaltyCells_.size(), sumOp<label>())
+        << returnReduce(forcing_->nCells(), sumOp<label>())
         << " covered cells, CPU update " << updateCpu_
         << " s, penalty (last step) " << lastPenaltyCpu << " s" << endl;
+}
+
+
+void Foam::immersedBodies::checkUpdated() const
+{
+    if (updateIndex_ != mesh_.time().timeIndex())
+    {
+        FatalErrorInFunction
+            << "immersedBodies::update(U) was not called in this time step"
+            << " (time " << mesh_.time().timeName() << "): the penalty would"
+            << " be that of the previous step" << nl << exit(FatalError);
+    }
+}
+
+
+void Foam::immersedBodies::addPenalty(fvVectorMatrix& source) const
+{
+    checkUpdated();
+    forcing_->addTo(source);
+}
+
+
+Foam::tmp<Foam::fvVectorMatrix>
+Foam::immersedBodies::penalty(const volVectorField& U) const
+{
+    checkUpdated();
+    return forcing_->penalty(U);
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::immersedBodies::solidFraction() const
+{
+    return forcing_->solidFraction();
+}
+
+
+Foam::tmp<Foam::volVectorField> Foam::immersedBodies::bodyVelocity() const
+{
+    return forcing_->bodyVelocity();
 }
 
 

@@ -14,7 +14,7 @@ bool Foam::immersedBodies::writeData(Ostream& os) const
     // the restart state round-trips exactly: 17 significant digits
     const int oldPrecision = os.precision(17);
 
-    os.writeEntry("eta", eta_);
+    os.writeEntry("eta", forcing_->eta());
     os.writeEntry("deltaT", lastDeltaT_);
     os.writeEntry
     (
@@ -29,7 +29,7 @@ bool Foam::immersedBodies::writeData(Ostream& os) const
         os.endBlock();
     }
     os.endBlock();
-    collision_->writeHistory(os);
+    integrator_->collision().writeHistory(os);
 
     os.precision(oldPrecision);
     return os.good();

@@ -9,7 +9,7 @@ Description
     bodies.update(U), solve(fvm::ddt(U) == bodies.penalty(U)) (Euler).
     With no other term every cell is its own equation, so the implicit step
     is known in closed form. With k = alpha/(eta + (1 - alpha) dt) (the
-    penalty coefficient of immersedBodiesCoupling.C) a covered cell gets
+    penalty coefficient of penaltyForcing.C) a covered cell gets
         u = ((1 + r - alpha) u_prev + alpha U_s)/(1 + r)
     and the checks are:
     - the body path: X = X0 + U_p t, R = exp(t [omega]x) R0;

@@ -1,0 +1,142 @@
+/*---------------------------------------------------------------------------*\
+  spheroidFoam: particle-resolved flows of immersed spheroids for OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later (as OpenFOAM).
+\*---------------------------------------------------------------------------*/
+
+#include "bodyIntegrator.H"
+#include "coupledBodySet.H"
+#include "coreConversions.H"
+#include "uniformDimensionedFields.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::vector Foam::bodyIntegrator::readGravity
+(
+    const fvMesh& mesh,
+    const PtrList<immersedBody>& bodies
+)
+{
+    bool needed = false;
+    for (const immersedBody& body : bodies)
+    {
+        needed = needed || body.motion().isFreeInTranslation();
+    }
+    if (!needed)
+    {
+        return Zero;
+    }
+
+    IOobject gIO
+    (
+        "g",
+        mesh.time().constant(),
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE
+    );
+    if (!gIO.typeHeaderOk<uniformDimensionedVectorField>(true))
+    {
+        FatalErrorInFunction
+            << "A body is free in translation, which needs gravity: the file "
+            << gIO.objectPath() << " (uniformDimensionedVectorField g, e.g."
+            << " value (0 0 -9.81);) is missing" << nl
+            << exit(FatalError);
+    }
+    const uniformDimensionedVectorField g(gIO);
+    if (g.dimensions() != dimAcceleration)
+    {
+        FatalIOErrorInFunction(gIO.objectPath())
+            << "Entry 'dimensions' of " << gIO.objectPath()
+            << " must be those of an acceleration " << dimAcceleration
+            << ", not " << g.dimensions() << nl
+            << exit(FatalIOError);
+    }
+    return g.value();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::bodyIntegrator::bodyIntegrator
+(
+    const fvMesh& mesh,
+    const dictionary& properties,
+    const PtrList<immersedBody>& bodies,
+    const scalar fluidDensity,
+    const label subSteps,
+    const scalar virtualMass
+)
+:
+    fluidDensity_(fluidDensity),
+    subSteps_(subSteps),
+    virtualMass_(virtualMass),
+    g_(readGravity(mesh, bodies)),
+    collision_(collisionModel::New(properties, mesh, fluidDensity))
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::bodyIntegrator::advance
+(
+    PtrList<immersedBody>& bodies,
+    const scalar t0,
+    const scalar dt
+)
+{
+    using immersedSpheroids::toCore;
+    using immersedSpheroids::toFoam;
+
+    const label nBodies = bodies.size();
+    coupledBodySet set(bodies, fluidDensity_, g_, virtualMass_, collision_->filmGap());
+    std::vector<collision::BodyState> states(nBodies);
+    forAll(bodies, i)
+    {
+        states[i] = toCore(bodies[i].state());
+    }
+
+    const bool colliding = collision_->active();
+    const label nSub =
+        colliding
+      ? max(subSteps_, collision_->subSteps(set, states, dt))
+      : subSteps_;
+    const scalar subDt = dt/nSub;
+
+    // the states the hydrodynamic force of this step responded to (the
+    // film correction)
+    std::vector<collision::BodyState> referenceStates;
+    if (colliding)
+    {
+        referenceStates = states;
+    }
+
+    vectorField Fc, Tc;
+    vectorField FcMean(nBodies, Zero), TcMean(nBodies, Zero);
+    for (label stepi = 0; stepi < nSub; ++stepi)
+    {
+        collision_->subStep
+        (
+            set, states, t0 + stepi*subDt, dt, subDt, referenceStates, Fc, Tc
+        );
+        FcMean += Fc/nSub;
+        TcMean += Tc/nSub;
+    }
+
+    forAll(bodies, i)
+    {
+        bodies[i].state() = toFoam(states[i]);
+    }
+    if (colliding)
+    {
+        forAll(bodies, i)
+        {
+            bodies[i].setCollision(FcMean[i], TcMean[i]);
+        }
+        collision_->report(nSub);
+    }
+}
+
+
+// ************************************************************************* //

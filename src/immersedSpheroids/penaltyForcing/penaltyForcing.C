@@ -10,6 +10,41 @@ License
 #include "processCpuTime.H"
 #include "cellSolidFraction.H"
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- A zero field of the mesh for output (not registered, not written)
+template<class Type>
+Foam::tmp<Foam::GeometricField<Type, Foam::fvPatchField, Foam::volMesh>>
+zeroField
+(
+    const Foam::fvMesh& mesh,
+    const Foam::word& name,
+    const Foam::dimensionSet& dims
+)
+{
+    using namespace Foam;
+    return tmp<GeometricField<Type, fvPatchField, volMesh>>::New
+    (
+        IOobject
+        (
+            name,
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh,
+        dimensioned<Type>(dims, Zero)
+    );
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::penaltyForcing::penaltyForcing
@@ -205,20 +240,7 @@ Foam::penaltyForcing::penalty(const volVectorField& U) const
 
 Foam::tmp<Foam::volScalarField> Foam::penaltyForcing::solidFraction() const
 {
-    auto talpha = tmp<volScalarField>::New
-    (
-        IOobject
-        (
-            "solidFraction",
-            mesh_.time().timeName(),
-            mesh_,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mesh_,
-        dimensionedScalar(dimless, Zero)
-    );
+    auto talpha = zeroField<scalar>(mesh_, "solidFraction", dimless);
     scalarField& alpha = talpha.ref().primitiveFieldRef();
     forAll(cells_, s)
     {
@@ -231,20 +253,7 @@ Foam::tmp<Foam::volScalarField> Foam::penaltyForcing::solidFraction() const
 
 Foam::tmp<Foam::volVectorField> Foam::penaltyForcing::bodyVelocity() const
 {
-    auto tUs = tmp<volVectorField>::New
-    (
-        IOobject
-        (
-            "bodyVelocity",
-            mesh_.time().timeName(),
-            mesh_,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mesh_,
-        dimensionedVector(dimVelocity, Zero)
-    );
+    auto tUs = zeroField<vector>(mesh_, "bodyVelocity", dimVelocity);
     vectorField& Us = tUs.ref().primitiveFieldRef();
     forAll(cells_, s)
     {

@@ -9,6 +9,7 @@ License
 #include "processCpuTime.H"
 #include "dictionaryChecks.H"
 #include "packingBodies.H"
+#include "bodyChecks.H"
 #include "Enum.H"
 #include "collision/Range.hpp"
 
@@ -138,8 +139,51 @@ void Foam::immersedBodies::readBodies()
 
 bool Foam::immersedBodies::readRestartState()
 {
-    if (!headerOk())
+    // the state file on every rank or on none
+    boolList found(Pstream::nProcs(), false);
+    found[Pstream::myProcNo()] = headerOk();
+    Pstream::listCombineGather(found, orEqOp<bool>());
+    Pstream::listCombineScatter(found);
+    if (found.found(true) && found.found(false))
     {
+        labelList missing;
+        forAll(found, proci)
+        {
+            if (!found[proci])
+            {
+                missing.append(proci);
+            }
+        }
+        FatalErrorInFunction
+            << "The restart state " << objectPath() << " is missing in the"
+            << " processor directories of rank(s) " << missing << " but present"
+            << " in the others: the ranks would restart different bodies."
+            << " Restart from a time that every processor directory holds"
+            << " (or reconstruct and decompose the case again)" << nl
+            << exit(FatalError);
+    }
+    if (!found[Pstream::myProcNo()])
+    {
+        // a fresh start, unless the run continues from a later time than
+        // the first of the case: then the bodies' state is lost
+        const scalar t = mesh_.time().value();
+        for (const instant& i : mesh_.time().times())
+        {
+            if (i.name() != mesh_.time().constant() && i.value() < t - 1e-12*mag(t))
+            {
+                FatalErrorInFunction
+                    << "The run starts at t = " << t << " after the case's"
+                    << " time " << i.name() << ", but " << objectPath()
+                    << " (the bodies' state at the start time, written by"
+                    << " this module at every write time) is missing: the"
+                    << " bodies would restart from "
+                    << properties_.objectPath() << " while the fluid"
+                    << " continues. Restart from a time written with the"
+                    << " bodies, or move the earlier time directories away to"
+                    << " start the bodies afresh at t = " << t << nl
+                    << exit(FatalError);
+            }
+        }
         return false;
     }
 
@@ -282,7 +326,8 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     );
     ddtScheme_ = immersedSpheroids::ddtCoefficients::read(mesh, UName_);
 
-    if (!readRestartState())
+    const bool restarted = readRestartState();
+    if (!restarted)
     {
         const scalar t = mesh.time().value();
         for (immersedBody& body : bodies_)
@@ -290,6 +335,15 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
             body.motion().initialise(body.state(), t);
         }
     }
+    const string start
+    (
+        restarted
+      ? "at the start (from the restart state " + objectPath() + ")"
+      : "at the start (from " + properties_.objectPath() + ")"
+    );
+    checkReplicatedState(bodies_, start);
+    checkInsideMesh(mesh, bodies_, start);
+    checkResolution(mesh, bodies_);
 
     output_.reset
     (
@@ -361,6 +415,9 @@ void Foam::immersedBodies::update(const volVectorField& U)
 
     loads_.update(bodies_, *forcing_, U, fluidDensity_, solveDdt_, lastDeltaT_, debug);
     integrator_->advance(bodies_, t0, dt);
+    const string afterStep("after the step to t = " + time.timeName());
+    immersedSpheroids::checkReplicatedState(bodies_, afterStep);
+    immersedSpheroids::checkInsideMesh(mesh_, bodies_, afterStep);
     forcing_->updateCells(bodies_);
 
     const immersedSpheroids::ddtCoefficients ddt =

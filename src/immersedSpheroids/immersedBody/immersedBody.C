@@ -205,6 +205,16 @@ Foam::boundBox Foam::immersedBody::bounds() const
 }
 
 
+Foam::point Foam::immersedBody::supportPoint(const vector& n) const
+{
+    // x = c + P n/sqrt(n^T P n), P = R diag(a^2, b^2, c^2) R^T
+    const tensor R = state_.R();
+    const diagTensor D(sqr(semiAxes_.x()), sqr(semiAxes_.y()), sqr(semiAxes_.z()));
+    const vector Pn = (R & D & R.T()) & n;
+    return state_.centre + Pn/Foam::sqrt(n & Pn);
+}
+
+
 void Foam::immersedBody::updateCells
 (
     const polyMesh& mesh,

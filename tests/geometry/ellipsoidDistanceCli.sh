@@ -58,4 +58,6 @@ printf '%s\n%s\n' "$header" "1,1,1,0,0,0,1.0000005,0,0,0,1,1,1,3,0,0,1,0,0,0" | 
 # bad options: exit status 2
 if "$exe" -method nope "$tmp/pairs.csv" 2> "$tmp/err"; then fail "unknown method accepted"; fi
 grep -q "valid methods" "$tmp/err" || fail "unknown method message"
+if "$exe" -eps 1e-6 -epsRel 1e-5 "$tmp/pairs.csv" > /dev/null 2> "$tmp/err"; then fail "-eps with -epsRel accepted"; fi
+grep -q -- "-eps and -epsRel exclude each other" "$tmp/err" || { cat "$tmp/err"; fail "-eps with -epsRel message"; }
 echo "PASS"

@@ -38,7 +38,7 @@ Options:
                    dual | auto | all                              (default auto)
   -eps E           absolute tolerance on the distance
   -epsRel E        tolerance as a fraction of the smaller equal-volume radius
-                   of each pair                                   (default 1e-5)
+                   of each pair (not with -eps)                   (default 1e-5)
   -stop RULE       paper | certified: stopping test of movingBalls,
                    newtonCoulomb and jain (auto is always certified) (default paper)
   -adaptiveEpsTheta  eps_theta from the local curvature (eq. F.6) in movingBalls
@@ -82,6 +82,7 @@ double number(const std::string& option, const std::string& text, bool positive)
 int main(int argc, char** argv) {
   std::string methodName = "auto", input, output;
   double eps = -1, epsRel = 1e-5;
+  bool epsGiven = false, epsRelGiven = false;
   DistanceOptions base;
   NewtonCoulomb::Parameters nc;
   ExteriorPenalty::Parameters ep;
@@ -102,8 +103,10 @@ int main(int argc, char** argv) {
       methodName = value();
     } else if (a == "-eps") {
       eps = number(a, value(), true);
+      epsGiven = true;
     } else if (a == "-epsRel") {
       epsRel = number(a, value(), true);
+      epsRelGiven = true;
     } else if (a == "-stop") {
       const std::string s = value();
       if (s == "paper") base.stopRule = StopRule::paper;
@@ -140,6 +143,9 @@ int main(int argc, char** argv) {
     }
   }
   if (input.empty()) usageError("no input: give a CSV file or '-' for standard input");
+  if (epsGiven && epsRelGiven) {
+    usageError("options -eps and -epsRel exclude each other: give the absolute or the relative tolerance");
+  }
 
   // methods
   std::vector<std::unique_ptr<DistanceMethod>> methods;

@@ -11,6 +11,7 @@ License
 #include "packingBodies.H"
 #include "bodyChecks.H"
 #include "Enum.H"
+#include "IFstream.H"
 #include "collision/Range.hpp"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -54,6 +55,24 @@ const Enum<wallCellPenaltyType> wallCellPenaltyNames
     { wallCellPenaltyType::stiff, "stiff" },
 });
 constexpr wallCellPenaltyType wallCellPenaltyDefault = wallCellPenaltyType::soft;
+
+//- Stop the run if a keyword stands twice in one dictionary of the file
+//  (two bodies of one name, a setting given twice): OpenFOAM keeps the
+//  last silently. The file is read again with duplicates as errors (a
+//  top-level read resets the input mode, a dictionary's read does not).
+void checkDuplicateEntries(const fileName& file)
+{
+    if (!Pstream::master() || !isFile(file))
+    {
+        return;
+    }
+    IFstream is(file);
+    const entry::inputMode before = entry::globalInputMode;
+    entry::globalInputMode = entry::inputMode::ERROR;
+    dictionary dict;
+    dict.read(is);
+    entry::globalInputMode = before;
+}
 
 } // End anonymous namespace
 
@@ -270,6 +289,8 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     updateCpu_(0)
 {
     using namespace immersedSpheroids;
+
+    checkDuplicateEntries(properties_.filePath());
 
     checkKeywords
     (

@@ -92,15 +92,20 @@ Foam::immersedBody::immersedBody(const word& name, const dictionary& dict)
         (
             dict, "orientation", "a unit quaternion (w x y z), body to world"
         );
+        // four significant digits make a unit quaternion to 1e-4; it is
+        // normalised after the check
+        const scalar tolerance = 1e-4;
         const scalar norm =
             Foam::sqrt(sqr(q[0]) + sqr(q[1]) + sqr(q[2]) + sqr(q[3]));
-        if (mag(norm - 1) > 1e-6)
+        if (mag(norm - 1) > tolerance)
         {
             entryError
             (
                 dict, "orientation",
-                "a unit quaternion (w x y z) is required (|q| = "
-              + Foam::name(norm) + ")"
+                "a unit quaternion (w x y z) is required: |q| = "
+              + Foam::name(norm) + " differs from 1 by more than "
+              + Foam::name(tolerance) + " (give the components to at least"
+                " four significant digits, e.g. (0.7071 0 0 0.7071))"
             );
         }
         state_.orientation = listToQuaternion(q);

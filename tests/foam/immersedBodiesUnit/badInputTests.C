@@ -262,8 +262,48 @@ void immersedBodiesTests::testBadInput(const Time& runTime, const fvMesh& mesh)
     expectFatalIOError
     (
         construct(withBody("semiAxes (0.1 0.05 0.05); density 1100; centre (0.5 0.5 0.5); orientation (1 0 0 0.5); motion { type fixed; }")),
-        {"'orientation'", "unit", fname},
-        "orientation not a unit quaternion"
+        {"'orientation'", "unit", "differs from 1 by more than 0.0001", fname},
+        "orientation not a unit quaternion, the tolerance stated"
+    );
+    {
+        // four significant digits are a unit quaternion
+        bool ok = true;
+        const bool throwing = FatalIOError.throwExceptions();
+        try
+        {
+            constructRaw(withBody("semiAxes (0.1 0.05 0.05); density 1100; centre (0.5 0.5 0.5); orientation (0.7071 0 0 0.7071); motion { type fixed; }"))();
+        }
+        catch (const Foam::error& err)
+        {
+            ok = false;
+            Info<< err.message().c_str() << endl;
+        }
+        FatalIOError.throwExceptions(throwing);
+        check(ok, "bad input: orientation (0.7071 0 0 0.7071) is accepted");
+    }
+    expectFatalIOError
+    (
+        construct("fluidDensity 1000;" + output + " bodies { b1 { " + goodBody + " } b1 { " + goodBody + " } }"),
+        {"duplicate entry", "b1", fname},
+        "two bodies of one name"
+    );
+    expectFatalIOError
+    (
+        construct("fluidDensity 1000; fluidDensity 900;" + output + " bodies { b1 { " + goodBody + " } }"),
+        {"duplicate entry", "fluidDensity", fname},
+        "a setting given twice"
+    );
+    expectFatalIOError
+    (
+        construct(withBody("semiAxes (0.1 0.05 0.05); density 1100; centre (0.5 0.5 0.5); motion { type prescribed; velocity table ((0 (1 0 0)) (0.5 (0 1 0)) (0.2 (0 0 1))); }")),
+        {"'velocity'", "not a valid function of time", "out-of-order", fname},
+        "a prescribed table with times out of order"
+    );
+    expectFatalIOError
+    (
+        construct("fluidDensity 1000;" + output + " bodies { b1 { " + goodBody + " } } collision { type contact; walls (walls walls); }"),
+        {"'walls'", "twice", fname},
+        "a wall patch named twice"
     );
     expectFatalIOError
     (

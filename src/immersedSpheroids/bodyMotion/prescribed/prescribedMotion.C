@@ -41,7 +41,32 @@ Foam::autoPtr<Foam::Function1<Foam::vector>> readFunction
             new Function1Types::Constant<vector>(name, vector::zero)
         );
     }
-    return Function1<vector>::New(name, dict);
+    // the Function1's own checks (e.g. a table's times out of order) name
+    // neither the keyword nor the file: rethrown with both
+    const bool throwing = FatalError.throwExceptions();
+    const bool throwingIO = FatalIOError.throwExceptions();
+    autoPtr<Function1<vector>> f;
+    std::string problem;
+    try
+    {
+        f = Function1<vector>::New(name, dict);
+    }
+    catch (const Foam::error& err)
+    {
+        problem = err.message();
+    }
+    FatalError.throwExceptions(throwing);
+    FatalIOError.throwExceptions(throwingIO);
+    if (!problem.empty())
+    {
+        immersedSpheroids::entryError
+        (
+            dict, name,
+            "is not a valid function of time (a Function1 of vector: constant,"
+            " table with increasing times, sine, ...): " + problem
+        );
+    }
+    return f;
 }
 
 } // End anonymous namespace

@@ -49,6 +49,22 @@ std::vector<collision::PlaneWall> Foam::immersedSpheroids::planeWalls
         )
     );
 
+    // a patch named twice would act twice (its film and lubrication forces
+    // doubled)
+    wordHashSet named;
+    for (const word& name : names)
+    {
+        if (!named.insert(name))
+        {
+            entryError
+            (
+                dict, keyword,
+                "names '" + name + "' twice; each wall patch once: patches: ("
+              + allowed + ")"
+            );
+        }
+    }
+
     for (const word& name : names)
     {
         const label patchi = patches.findPatchID(name);

@@ -284,7 +284,8 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         wordList
         ({
             "fluidDensity", "U", "penaltyRatio", "wallCellPenalty", "subSteps",
-            "virtualMass", "bodies", "packing", "output", "collision"
+            "virtualMass", "bodies", "packing", "output", "collision",
+            "filmStabilisation", "filmGap", "viscosity"
         })
     );
     fluidDensity_ = readPositive
@@ -336,7 +337,12 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
 
     readBodies();
     readGravity();
-    collision_ = collisionModel::New(properties_, mesh_, fluidDensity_);
+    const filmCorrection film
+    (
+        properties_, mesh_, fluidDensity_,
+        collisionModel::selectedType(properties_) != "none"
+    );
+    collision_ = collisionModel::New(properties_, mesh_, film);
     ddtScheme_ = immersedSpheroids::ddtCoefficients::read(mesh, UName_);
 
     if (!readRestartState())

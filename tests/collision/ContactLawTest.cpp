@@ -1,6 +1,7 @@
 #include "collision/CollisionModel.hpp"
 #include "collision/ContactLaw.hpp"
 #include "collision/PlaneWall.hpp"
+#include "ModelSetup.hpp"
 
 #include <gtest/gtest.h>
 
@@ -85,9 +86,10 @@ TEST(PlaneWall, SpheroidDistanceMatchesSampling) {
 
 namespace {
 /// The message of validate() on settings with one value out of range; empty if it passed.
-std::string validateMessage(const CollisionSettings& s) {
+std::string validateMessage(const ModelSetup& s) {
   try {
-    s.validate();
+    s.settings.validate();
+    s.laws.validate();
   } catch (const std::invalid_argument& e) {
     return e.what();
   }
@@ -98,31 +100,31 @@ std::string validateMessage(const CollisionSettings& s) {
 TEST(ContactLaw, OutOfRangeSettingsNameTheKeywordAndTheRangeOfTheConstants) {
   struct Case {
     const char* keyword;
-    void (*set)(CollisionSettings&);
+    void (*set)(ModelSetup&);
     Range range;
   };
   const Case cases[] = {
-      {"restitution", [](CollisionSettings& s) { s.contact.restitution = 1.5; },
+      {"restitution", [](ModelSetup& s) { s.laws.contact.restitution = 1.5; },
        ContactParameters::kRestitutionRange},
-      {"friction", [](CollisionSettings& s) { s.contact.friction = -0.1; },
+      {"friction", [](ModelSetup& s) { s.laws.contact.friction = -0.1; },
        ContactParameters::kFrictionRange},
-      {"maxOverlap", [](CollisionSettings& s) { s.maxOverlap = 0; },
+      {"maxOverlap", [](ModelSetup& s) { s.settings.maxOverlap = 0; },
        CollisionSettings::kMaxOverlapRange},
-      {"subStepsPerContact", [](CollisionSettings& s) { s.subStepsPerContact = 3; },
+      {"subStepsPerContact", [](ModelSetup& s) { s.settings.subStepsPerContact = 3; },
        CollisionSettings::kSubStepsPerContactRange},
-      {"distanceAccuracy", [](CollisionSettings& s) { s.distanceAccuracy = 0.5; },
+      {"distanceAccuracy", [](ModelSetup& s) { s.settings.distanceAccuracy = 0.5; },
        CollisionSettings::kDistanceAccuracyRange},
-      {"maxSubSteps", [](CollisionSettings& s) { s.maxSubSteps = 0; },
+      {"maxSubSteps", [](ModelSetup& s) { s.settings.maxSubSteps = 0; },
        CollisionSettings::kMaxSubStepsRange},
-      {"saturation", [](CollisionSettings& s) { s.lubrication.saturation = 1; },
+      {"saturation", [](ModelSetup& s) { s.laws.lubrication.saturation = 1; },
        LubricationParameters::kSaturationRange},
-      {"pairActivation", [](CollisionSettings& s) { s.lubrication.pairActivation = 2; },
-       CollisionSettings().lubrication.activationRange()},
+      {"pairActivation", [](ModelSetup& s) { s.laws.lubrication.pairActivation = 2; },
+       LubricationParameters().activationRange()},
   };
   // the defaults lie in their ranges
-  EXPECT_EQ(validateMessage(CollisionSettings()), "");
+  EXPECT_EQ(validateMessage(ModelSetup()), "");
   for (const Case& c : cases) {
-    CollisionSettings s;
+    ModelSetup s;
     c.set(s);
     const std::string what = validateMessage(s);
     EXPECT_NE(what.find(c.keyword), std::string::npos) << what;

@@ -2,6 +2,7 @@
 // step that coupled runs use (SubStepper, RigidBodyStep; validation/dryCollisions
 // reports the same measurements over wider ranges).
 #include "collision/RigidBody.hpp"
+#include "ModelSetup.hpp"
 
 #include <gtest/gtest.h>
 
@@ -41,10 +42,9 @@ RigidBody sphere(Scalar r, const Vec3& c, const Vec3& u) {
   return b;
 }
 
-CollisionSettings contactOnly(Scalar e) {
-  CollisionSettings s;
-  s.mode = CollisionMode::contact;
-  s.contact.restitution = e;
+ModelSetup contactOnly(Scalar e) {
+  ModelSetup s;
+  s.laws.contact.restitution = e;
   return s;
 }
 
@@ -62,9 +62,9 @@ TEST(DryCollision, HeadOnSpheresReboundWithTheRestitutionAndConserveMomentum) {
   for (Scalar e : {0.97, 0.5, 0.1}) {
     std::vector<RigidBody> b{sphere(1e-3, Vec3(-1.1e-3, 0, 0), Vec3(0.3, 0, 0)),
                              sphere(0.5e-3, Vec3(0.6e-3, 0, 0), Vec3(-0.2, 0, 0))};
-    CollisionSettings s = contactOnly(e);
-    s.subStepsPerContact = 50;
-    CollisionModel model(s, {});
+    ModelSetup s = contactOnly(e);
+    s.settings.subStepsPerContact = 50;
+    CollisionModel model = makeModel(s, {});
     const Vec3 p0 = b[0].linearMomentum() + b[1].linearMomentum();
     const Scalar u0 = b[1].velocity.x() - b[0].velocity.x();
     simulate(b, model, 1e-5, 2e-3);
@@ -79,7 +79,7 @@ TEST(DryCollision, HeadOnSpheresReboundWithTheRestitutionAndConserveMomentum) {
 TEST(DryCollision, SphereOnWallReboundsWithTheRestitution) {
   for (Scalar e : {0.97, 0.5}) {
     std::vector<RigidBody> b{sphere(2e-3, Vec3(0, 0, 2.2e-3), Vec3(0, 0, -0.5))};
-    CollisionModel model(contactOnly(e), {PlaneWall{"floor", Vec3::Zero(), Vec3::UnitZ()}});
+    CollisionModel model = makeModel(contactOnly(e), {PlaneWall{"floor", Vec3::Zero(), Vec3::UnitZ()}});
     simulate(b, model, 1e-5, 2e-3);
     EXPECT_NEAR(b[0].velocity.z() / 0.5, e, 0.01 * e);
     EXPECT_LT(model.statistics().maxOverlapRatio, 0.1 * 1.05);
@@ -103,7 +103,7 @@ TEST(DryCollision, TiltedSpheroidOnWallContactPointReboundsWithTheRestitution) {
       const Scalar h = std::sqrt(Vec3::UnitZ().dot(b.collisionBody().shape.shapeMatrix() * Vec3::UnitZ()));
       b.centre = Vec3(0, 0, h + 1e-5);
       std::vector<RigidBody> bodies{b};
-      CollisionModel model(contactOnly(0.8), {PlaneWall{"floor", Vec3::Zero(), Vec3::UnitZ()}});
+      CollisionModel model = makeModel(contactOnly(0.8), {PlaneWall{"floor", Vec3::Zero(), Vec3::UnitZ()}});
       const Scalar before = wallNormalSpeed(bodies[0]);
       // stop as soon as the contact ends (a tumbling body may come back)
       bool touched = false;
@@ -134,9 +134,9 @@ TEST(DryCollision, ObliqueSpheroidImpactConservesLinearAndAngularMomentum) {
   c.velocity = Vec3(-0.3, 0, 0);
   c.density = 1100;
   std::vector<RigidBody> b{a, c};
-  CollisionSettings s = contactOnly(0.7);
-  s.contact.friction = 0.3;
-  CollisionModel model(s, {});
+  ModelSetup s = contactOnly(0.7);
+  s.laws.contact.friction = 0.3;
+  CollisionModel model = makeModel(s, {});
   const Vec3 p0 = b[0].linearMomentum() + b[1].linearMomentum();
   const Vec3 l0 = b[0].angularMomentum() + b[1].angularMomentum();
   const RunSummary run = simulate(b, model, 1e-5, 1.5e-2);
@@ -173,9 +173,9 @@ TEST(DryCollision, CappedImpactsOfTurningSpheroidsNeverGainEnergy) {
     const Scalar h = std::sqrt(Vec3::UnitZ().dot(b.collisionBody().shape.shapeMatrix() * Vec3::UnitZ()));
     b.centre = Vec3(0, 0, h + 1e-6);
     std::vector<RigidBody> bodies{b};
-    CollisionSettings s = contactOnly(0.97);
-    s.subStepsPerContact = 20;
-    CollisionModel model(s, {PlaneWall{"floor", Vec3::Zero(), Vec3::UnitZ()}});
+    ModelSetup s = contactOnly(0.97);
+    s.settings.subStepsPerContact = 20;
+    CollisionModel model = makeModel(s, {PlaneWall{"floor", Vec3::Zero(), Vec3::UnitZ()}});
     const Scalar ke0 = bodies[0].kineticEnergy();
     bool touched = false;
     Scalar keMax = 0;
@@ -207,7 +207,7 @@ TEST(DryCollision, ABodySwingingIntoAContactKeepsTheOverlapNearTheCap) {
   const Scalar h = std::sqrt(Vec3::UnitZ().dot(b.collisionBody().shape.shapeMatrix() * Vec3::UnitZ()));
   b.centre = Vec3(0, 0, h + 1e-7);
   std::vector<RigidBody> bodies{b};
-  CollisionModel model(contactOnly(0.9), {PlaneWall{"floor", Vec3::Zero(), Vec3::UnitZ()}});
+  CollisionModel model = makeModel(contactOnly(0.9), {PlaneWall{"floor", Vec3::Zero(), Vec3::UnitZ()}});
   const Scalar ke0 = bodies[0].kineticEnergy();
   for (int k = 0; k < 200; ++k) collisionStep(bodies, model, 1e-3, 1e-5);
   ASSERT_GT(model.statistics().wallContacts, 0);
@@ -233,7 +233,7 @@ TEST(DryCollision, ExtremeAspectRatiosAtGrazingAnglesAndHighSpeedNeitherTunnelNo
       c.centre = Vec3(1.5e-3, 0, 0);
       c.velocity = Vec3(-speed, 0, 0);
       std::vector<RigidBody> b{a, c};
-      CollisionModel model(contactOnly(0.9), {});
+      CollisionModel model = makeModel(contactOnly(0.9), {});
       const Scalar time = 8e-3 / speed;
       const RunSummary run = simulate(b, model, time / 400, time);
       for (const RigidBody& x : b) {
@@ -255,10 +255,11 @@ TEST(DryCollision, ExtremeAspectRatiosAtGrazingAnglesAndHighSpeedNeitherTunnelNo
 }
 
 TEST(DryCollision, DeepOverlapAtStartAndTinyGapsWithLubricationStayFinite) {
-  CollisionSettings s;
-  s.mode = CollisionMode::lubricationContact;
-  s.viscosity = 1e-3;
-  CollisionModel model(s, {PlaneWall{"floor", Vec3::Zero(), Vec3::UnitZ()}});
+  ModelSetup s;
+  s.model = "lubricatedSpringDashpot";
+  s.laws.viscosity = 1e-3;
+  s.filmViscosity = 1e-3;
+  CollisionModel model = makeModel(s, {PlaneWall{"floor", Vec3::Zero(), Vec3::UnitZ()}});
   // concentric bodies, a body half through the floor, gaps 1e-6 D_eq
   const Scalar d = 1e-3;
   for (Scalar gap : {-0.5 * d, 0.0, 1e-6 * d, 1e-9 * d}) {
@@ -310,15 +311,15 @@ TEST(DryCollision, RestartFromTheHistoryContinuesBitwiseAsTheUninterruptedRun) {
     return b;
   };
   const std::vector<PlaneWall> walls{PlaneWall{"floor", Vec3::Zero(), Vec3::UnitZ()}};
-  CollisionSettings s = contactOnly(0.7);
-  s.contact.friction = 0.2;
+  ModelSetup s = contactOnly(0.7);
+  s.laws.contact.friction = 0.2;
   const Scalar dt = 2e-5;
   const Scalar tc = 8 * dt;
 
   std::vector<RigidBody> a = scene();
-  CollisionModel uninterrupted(s, walls);
+  CollisionModel uninterrupted = makeModel(s, walls);
   std::vector<RigidBody> b = scene();
-  CollisionModel first(s, walls);
+  CollisionModel first = makeModel(s, walls);
   int k = 0;
   for (; k < 400 && first.activeContacts() < 1; ++k) {
     collisionStep(a, uninterrupted, tc, dt);
@@ -327,7 +328,7 @@ TEST(DryCollision, RestartFromTheHistoryContinuesBitwiseAsTheUninterruptedRun) {
   ASSERT_EQ(first.activeContacts(), 1u) << "the sphere should touch the wall first";
   const std::vector<PairRecord> saved = first.history();
   ASSERT_GE(saved.size(), 1u);
-  CollisionModel restarted(s, walls);
+  CollisionModel restarted = makeModel(s, walls);
   restarted.setHistory(saved);
   EXPECT_EQ(restarted.activeContacts(), 1u);
   long pairContacts = 0;
@@ -359,7 +360,7 @@ TEST(DryCollision, ASustainedLoadIsCarriedWithinTheOverlapCap) {
   const Scalar a = 2e-3, contactTime = 0.04, dt = 1e-4, drag = 1;  // drag dt/m = 0.38
   const Vec3 g(0, 0, -9.81);
   for (const bool declared : {true, false}) {
-    CollisionModel model(contactOnly(0.9), {PlaneWall{"floor", Vec3::Zero(), Vec3::UnitZ()}});
+    CollisionModel model = makeModel(contactOnly(0.9), {PlaneWall{"floor", Vec3::Zero(), Vec3::UnitZ()}});
     RigidBody b = sphere(a, Vec3(0, 0, a), Vec3::Zero());
     Scalar deepest = 0;
     for (int step = 0; step < 20000; ++step) {  // 2 s, the contact's oscillation damped
@@ -410,14 +411,14 @@ TEST(DryCollision, ARestartInsideALoadedStackContinuesBitwise) {
   };
   std::vector<RigidBody> b{sphere(a, Vec3(0, 0, a), Vec3::Zero()),
                            sphere(a, Vec3(0.3 * a, 0, a + 1.977 * a), Vec3::Zero())};  // touching
-  CollisionModel model(contactOnly(0.9), walls);
+  CollisionModel model = makeModel(contactOnly(0.9), walls);
   // restart while the load still grows (the upper sphere settling): a lost
   // load of the other contact would leave a spring softer than it should be
   for (int k = 0; k < 5; ++k) step(b, model);
   ASSERT_EQ(model.activeContacts(), 2u) << "both contacts under way";
   const std::vector<PairRecord> saved = model.history();
   std::vector<RigidBody> c = b;
-  CollisionModel restarted(contactOnly(0.9), walls);
+  CollisionModel restarted = makeModel(contactOnly(0.9), walls);
   restarted.setHistory(saved);
   // the pairs' last contact forces (the other contacts' load) survive the restart
   const std::vector<PairRecord> again = restarted.history();

@@ -7,6 +7,7 @@
 // that lags a step.
 #include "collision/LubricationLaw.hpp"
 #include "collision/RigidBody.hpp"
+#include "ModelSetup.hpp"
 
 #include <gtest/gtest.h>
 
@@ -30,11 +31,12 @@ RigidBody sphere(Scalar r, const Vec3& c, const Vec3& u, Scalar density = 2000) 
   return b;
 }
 
-CollisionSettings lubricated(Scalar mu) {
-  CollisionSettings s;
-  s.mode = CollisionMode::lubricationContact;
-  s.viscosity = mu;
-  s.contact.restitution = 0.9;
+ModelSetup lubricated(Scalar mu) {
+  ModelSetup s;
+  s.model = "lubricatedSpringDashpot";
+  s.laws.viscosity = mu;
+  s.filmViscosity = mu;
+  s.laws.contact.restitution = 0.9;
   return s;
 }
 
@@ -64,7 +66,7 @@ TEST(ImplicitLubrication, OnePairIsExactBackwardEuler) {
   // c dt/m of order 100: the end velocity is u/(1 + c dt/m), the force -c u_end
   const Scalar a = 2e-3, mu = 0.07, dt = 1e-3;
   std::vector<RigidBody> b{sphere(a, Vec3(0, 0, a * 1.001), Vec3(0, 0, -0.01))};
-  CollisionModel model(lubricated(mu), {floorWall});
+  CollisionModel model = makeModel(lubricated(mu), {floorWall});
   const auto cb = collisionBodies(b);
   std::vector<Vec3> F, T, v, w;
   model.forces(cb, 10 * dt, dt, F, T);
@@ -91,9 +93,9 @@ TEST(ImplicitLubrication, AStackIsSolvedTogetherAndLosesEnergy) {
                            sphere(a, Vec3(0, 0, 3.004 * a), Vec3(0, 0.002, -0.05)),
                            sphere(a, Vec3(1.415 * a, 0, 4.419 * a), Vec3(-0.03, 0, 0.01))};
   b[2].angularVelocity = Vec3(0, 30, 5);
-  CollisionSettings s = lubricated(mu);
-  s.lubrication.pairActivation = 0.05;
-  CollisionModel model(s, {floorWall});
+  ModelSetup s = lubricated(mu);
+  s.laws.lubrication.pairActivation = 0.05;
+  CollisionModel model = makeModel(s, {floorWall});
   const auto cb = collisionBodies(b);
   std::vector<Vec3> F, T, v, w;
   model.forces(cb, 10 * dt, dt, F, T);
@@ -147,7 +149,7 @@ TEST(ImplicitLubrication, ABodyPressedOntoAWallCreepsWithoutOscillating) {
   const Scalar a = 2e-3, mu = 0.07, dt = 2e-3;
   const Vec3 g(0, 0, -9.81 * 0.5);
   std::vector<RigidBody> b{sphere(a, Vec3(0, 0, a * 1.05), Vec3::Zero())};
-  CollisionModel model(lubricated(mu), {floorWall});
+  CollisionModel model = makeModel(lubricated(mu), {floorWall});
   std::vector<Vec3> F, T, Fl, Tl, v, w;
   int creeping = 0;  // steps compared with the creeping speed
   for (int step = 0; step < 400; ++step) {
@@ -189,11 +191,9 @@ TEST(ImplicitLubrication, TheFilmCorrectionTurnsALaggedFlowDampingStable) {
   // estimate, here half of D_t) it decays
   const Scalar a = 2e-3, mu = 0.07, dt = 4e-3, cell = 6.7e-4;
   for (const bool film : {false, true}) {
-    CollisionSettings s;
-    s.mode = CollisionMode::contact;
-    s.viscosity = mu;
-    s.filmStabilisation = film;
-    CollisionModel model(s, {floorWall});
+    ModelSetup s;
+    s.filmViscosity = film ? mu : 0;
+    CollisionModel model = makeModel(s, {floorWall});
     std::vector<RigidBody> b{sphere(a, Vec3(0, 0, a + 0.2 * cell), Vec3(0, 0, -0.01))};
     const Scalar m = b[0].mass();
     auto cb = collisionBodies(b);
@@ -238,10 +238,9 @@ TEST(ImplicitLubrication, TheFilmCorrectionTurnsALaggedFlowDampingStable) {
 TEST(ImplicitLubrication, TheFilmCorrectionLeavesASteadyMotionAlone) {
   // reference velocities equal to the end velocities: no force from the film
   const Scalar a = 2e-3, cell = 6.7e-4;
-  CollisionSettings s;
-  s.mode = CollisionMode::contact;
-  s.viscosity = 0.07;
-  CollisionModel model(s, {floorWall});
+  ModelSetup s;
+  s.filmViscosity = 0.07;
+  CollisionModel model = makeModel(s, {floorWall});
   std::vector<RigidBody> b{sphere(a, Vec3(0, 0, a + 0.5 * cell), Vec3(0.01, 0, -0.003))};
   auto cb = collisionBodies(b);
   cb[0].filmGap = cell;
@@ -268,8 +267,8 @@ TEST(ImplicitLubrication, TheImpulseOfTheFilmDoesNotDependOnTheSubStep) {
   // at the start gap of each sub-step this test fails: checked by hand on
   // 2026-12-01.)
   const Scalar a = 1e-3, mu = 0.05, h0 = 0.07 * a;
-  const CollisionSettings s = lubricated(mu);
-  auto G = [&](Scalar h) { return wallLubricationIntegral(0, h, a, mu, s.lubrication); };
+  const ModelSetup s = lubricated(mu);
+  auto G = [&](Scalar h) { return wallLubricationIntegral(0, h, a, mu, s.laws.lubrication); };
   RigidBody probe = sphere(a, Vec3::Zero(), Vec3::Zero(), 7800);
   const Scalar m = probe.mass();
   const Scalar hStar = 4e-3 * a;
@@ -277,7 +276,7 @@ TEST(ImplicitLubrication, TheImpulseOfTheFilmDoesNotDependOnTheSubStep) {
   for (int perCrossing : {1, 10, 1000}) {
     const Scalar dt = h0 / U / perCrossing;
     std::vector<RigidBody> b{sphere(a, Vec3(0, 0, a + h0), Vec3(0, 0, -U), 7800)};
-    CollisionModel model(s, {floorWall});
+    CollisionModel model = makeModel(s, {floorWall});
     std::vector<Vec3> F, T, FL, TL, v, w;
     const Scalar invariant = -m * U + G(h0);
     for (int step = 0; step < 3000; ++step) {

@@ -5,6 +5,7 @@
 // where the last ended, and a body falling onto a wall stays above it.
 #include "collision/SubStepper.hpp"
 #include "collision/RigidBody.hpp"
+#include "ModelSetup.hpp"
 
 #include <gtest/gtest.h>
 
@@ -89,9 +90,9 @@ TEST(SubStepper, TheReportedCollisionForceIsTheOneTheBodyGot) {
   const Scalar a = 1e-3;
   const std::vector<RigidBody> bodies{sphere(a, Vec3(0, 0, 1.05 * a), Vec3(0, 0, -0.05))};
   LoadedBodies set(bodies, Vec3(0, 0, -9.81));
-  CollisionSettings settings;
-  settings.contact.restitution = 0.5;
-  CollisionModel model(settings, {floorWall});
+  ModelSetup setup;
+  setup.laws.contact.restitution = 0.5;
+  CollisionModel model = makeModel(setup, {floorWall});
   std::vector<BodyState> states{bodies[0]};
   SubStepper stepper;
   const Scalar dt = 2e-5, contactTime = 2e-4;
@@ -113,7 +114,7 @@ TEST(SubStepper, TheReportedCollisionForceIsTheOneTheBodyGot) {
     }
   }
   EXPECT_GT(largestForce, 0);                                  // it touched
-  EXPECT_GT(lowest, -settings.maxOverlap * a * 1.05);           // within the overlap cap
+  EXPECT_GT(lowest, -setup.settings.maxOverlap * a * 1.05);           // within the overlap cap
   EXPECT_LT(states[0].velocity.norm(), 1e-3);                   // and came to rest
   EXPECT_NEAR(stepper.force()[0].z(), bodies[0].mass() * 9.81, 0.05 * bodies[0].mass() * 9.81);
 }

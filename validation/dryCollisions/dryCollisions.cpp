@@ -265,14 +265,25 @@ bool advance(std::vector<RigidBody>& bodies, CollisionModel& model, Scalar tMax,
   return false;
 }
 
-CollisionSettings contactSettings(Scalar e, int n, Scalar friction = 0) {
-  CollisionSettings s;
-  s.mode = CollisionMode::contact;
-  s.contact.restitution = e;
-  s.contact.friction = friction;
-  s.subStepsPerContact = n;
-  s.maxOverlap = kMaxOverlap;
+/// The numerical settings and the laws' parameters of a dry run (model springDashpot).
+struct DrySettings {
+  CollisionSettings settings;
+  InteractionParameters laws;
+};
+
+DrySettings contactSettings(Scalar e, int n, Scalar friction = 0) {
+  DrySettings s;
+  s.laws.contact.restitution = e;
+  s.laws.contact.friction = friction;
+  s.settings.subStepsPerContact = n;
+  s.settings.maxOverlap = kMaxOverlap;
   return s;
+}
+
+/// The collision model of a dry run: springDashpot pairs and walls, no film correction.
+CollisionModel dryModel(const DrySettings& s, std::vector<PlaneWall> walls) {
+  return CollisionModel(s.settings, PairModel::New("springDashpot", s.laws),
+                        WallModel::New("springDashpot", s.laws), std::move(walls));
 }
 
 struct Options {
@@ -330,7 +341,7 @@ HeadOn headOn(const std::string& kind, Scalar e, int n, Scalar phase, Scalar u0)
   } else {
     mEff = b[0].mass();
   }
-  CollisionModel model(contactSettings(e, n), walls);
+  CollisionModel model = dryModel(contactSettings(e, n), walls);
   const Vec3 p0 = linearMomentum(b);
   Scalar pScale = 0;
   for (const RigidBody& x : b) pScale += x.linearMomentum().norm();
@@ -466,7 +477,7 @@ void spheroidWall(const Options& o, Checks& checks) {
             const Scalar tcModel = std::min(kTc, kPi * kMaxOverlap * aMin / u);
 
             std::vector<RigidBody> bodies{b};
-            CollisionModel model(contactSettings(e, n), {kFloor});
+            CollisionModel model = dryModel(contactSettings(e, n), {kFloor});
             const Scalar before = wallNormalSpeed(bodies[0]);
             const Scalar ke0 = kineticEnergy(bodies);
             bool touched = false;
@@ -619,10 +630,10 @@ struct PairRun {
  * Two bodies until they are certainly apart for good (bounding spheres
  * disjoint and their centres receding: in vacuum they never meet again) or tMax.
  */
-PairRun runPair(std::vector<RigidBody>& b, const CollisionSettings& settings, Scalar tMax,
+PairRun runPair(std::vector<RigidBody>& b, const DrySettings& settings, Scalar tMax,
                 const Vec3& P) {
   PairRun r;
-  CollisionModel model(settings, {});
+  CollisionModel model = dryModel(settings, {});
   const Vec3 p0 = linearMomentum(b);
   Scalar pScale = 0;
   for (const RigidBody& x : b) pScale += x.linearMomentum().norm();
@@ -701,7 +712,7 @@ PairRun runPair(std::vector<RigidBody>& b, const CollisionSettings& settings, Sc
   } catch (const std::exception& ex) {
     r.error = ex.what();
   }
-  if (monitorEpisodes != 1 || settings.contact.friction > 0) r.eContact = -1;
+  if (monitorEpisodes != 1 || settings.laws.contact.friction > 0) r.eContact = -1;
   r.notConverged = model.statistics().distanceNotConverged;
   r.distanceQueries = model.statistics().distanceQueries;
   r.maxOverlapRatio = model.statistics().maxOverlapRatio;
@@ -922,7 +933,7 @@ void capSweep(const Options& o, Checks& checks) {
                                         Quat::Identity(), Vec3(speed / 2, 0, 0)),
                                makeBody(Vec3::Constant(0.5), Vec3(0.5 + 1e-6, 0, 0),
                                         Quat::Identity(), Vec3(-speed / 2, 0, 0))};
-      CollisionModel model(contactSettings(e, n), {});
+      CollisionModel model = dryModel(contactSettings(e, n), {});
       bool touched = false;
       Scalar time = 0, contactTime = 0;
       int maxSub = 0, contactSubSteps = 0;

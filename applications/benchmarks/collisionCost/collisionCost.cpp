@@ -76,7 +76,6 @@
 namespace {
 
 using collision::CollisionBody;
-using collision::CollisionMode;
 using collision::CollisionModel;
 using collision::CollisionSettings;
 using collision::Scalar;
@@ -136,6 +135,11 @@ struct Case {
   double ar;
 };
 const std::vector<Case> kCases = {{"1/6", 1.0 / 6}, {"1/3", 1.0 / 3}, {"1", 1.0}, {"3", 3.0}, {"6", 6.0}};
+/// the configurations measured, by the OpenFOAM collision type they stand for
+enum class CollisionMode { contact, lubricationContact };
+const char* toString(CollisionMode mode) {
+  return mode == CollisionMode::contact ? "contact" : "lubricationContact";
+}
 const std::vector<CollisionMode> kModes = {CollisionMode::contact, CollisionMode::lubricationContact};
 
 /// uniform unit vector from two uniform draws (Archimedes: z uniform in [-1, 1])
@@ -205,11 +209,31 @@ std::unique_ptr<Scene> makeScene(const Case& c, std::uint64_t seed, int stateCou
   return scene;
 }
 
-CollisionSettings settingsFor(CollisionMode mode) {
-  CollisionSettings s;
+/// The settings of one measured configuration: the numerical settings, the laws'
+/// parameters, and the pair and wall model (springDashpot or lubricatedSpringDashpot).
+struct Settings : CollisionSettings {
+  CollisionMode mode = CollisionMode::contact;
+  collision::InteractionParameters laws;
+  Scalar viscosity = 0;
+};
+
+Settings settingsFor(CollisionMode mode) {
+  Settings s;
   s.mode = mode;
   s.viscosity = mode == CollisionMode::lubricationContact ? kViscosity : 0;
+  s.laws.viscosity = s.viscosity;
   return s;
+}
+
+/// The model of a configuration (lubricationContact: with the film correction, as the
+/// OpenFOAM type of that name by default; the bodies here have no film gap).
+CollisionModel modelFor(const Settings& s) {
+  const std::string name =
+      s.mode == CollisionMode::lubricationContact ? "lubricatedSpringDashpot" : "springDashpot";
+  return CollisionModel(s, collision::PairModel::New(name, s.laws),
+                        collision::WallModel::New(name, s.laws), {},
+                        s.viscosity > 0 ? std::make_unique<collision::FilmCorrection>(s.viscosity)
+                                        : nullptr);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -222,7 +246,7 @@ struct Spheres {
   std::vector<ellipsoids::Ellipsoid> grown;
   std::vector<Vec3> halfExtent;  ///< axis-aligned half extents of the grown bodies
 
-  void compute(const std::vector<CollisionBody>& bodies, const CollisionSettings& settings,
+  void compute(const std::vector<CollisionBody>& bodies, const Settings& settings,
                bool withGrown) {
     const std::size_t n = bodies.size();
     const bool lubrication = settings.mode == CollisionMode::lubricationContact;
@@ -235,7 +259,7 @@ struct Spheres {
     for (std::size_t i = 0; i < n; ++i) {
       const ellipsoids::Ellipsoid& e = bodies[i].shape;
       const Scalar reach =
-          lubrication ? 0.5 * settings.lubrication.pairActivation * e.maxOfMaxCurvatureRadius() : 0;
+          lubrication ? 0.5 * settings.laws.lubrication.pairActivation * e.maxOfMaxCurvatureRadius() : 0;
       centres[i] = e.centre();
       radii[i] = e.maxSemiAxis() + reach;
       if (withGrown) {
@@ -248,7 +272,7 @@ struct Spheres {
   }
 };
 
-Scalar epsD(const CollisionSettings& s, const ellipsoids::Ellipsoid& e1, const ellipsoids::Ellipsoid& e2) {
+Scalar epsD(const Settings& s, const ellipsoids::Ellipsoid& e1, const ellipsoids::Ellipsoid& e2) {
   return s.distanceAccuracy * std::min(e1.minGaussianRadius(), e2.minGaussianRadius());
 }
 
@@ -262,7 +286,7 @@ struct PeerStatistics {
  * pairs listed), then a cold dual distance for each overlapping pair (no prefilter). The two
  * phases are timed on their own (into st); returns a checksum.
  */
-Scalar naiveDistances(const std::vector<CollisionBody>& bodies, const CollisionSettings& settings,
+Scalar naiveDistances(const std::vector<CollisionBody>& bodies, const Settings& settings,
                       Spheres& sp, const ellipsoids::DualNewton& dual,
                       std::vector<std::pair<int, int>>& overlapping, PeerStatistics& st) {
   const double t0 = cpuNow();
@@ -300,7 +324,7 @@ Scalar naiveDistances(const std::vector<CollisionBody>& bodies, const CollisionS
 }
 
 /// Step 1 of forces(): bounding spheres and pair search; the candidate pairs.
-long searchOnly(const std::vector<CollisionBody>& bodies, const CollisionSettings& settings,
+long searchOnly(const std::vector<CollisionBody>& bodies, const Settings& settings,
                 Spheres& sp, collision::PairSearch& search) {
   sp.compute(bodies, settings, false);
   return static_cast<long>(search.find(sp.centres, sp.radii).size());
@@ -326,7 +350,7 @@ struct StagedReplica {
     long candidates = 0, rejected = 0, queries = 0, coldIterations = 0, warmIterations = 0;
   };
 
-  Result run(const std::vector<CollisionBody>& bodies, const CollisionSettings& settings) {
+  Result run(const std::vector<CollisionBody>& bodies, const Settings& settings) {
     Result r;
     const double t0 = cpuNow();
     sp.compute(bodies, settings, true);
@@ -496,8 +520,8 @@ const char* kColumns =
 /// One (Ar, mode): warm-up rounds, then the timed rounds, interleaved.
 void measure(Scene& scene, CollisionMode mode, int warmupRounds, int rounds, Timings& tm, Counts& n) {
   using clock = std::chrono::steady_clock;
-  const CollisionSettings settings = settingsFor(mode);
-  CollisionModel warmModel(settings, {}), coldModel(settings, {});
+  const Settings settings = settingsFor(mode);
+  CollisionModel warmModel = modelFor(settings), coldModel = modelFor(settings);
   StagedReplica replica;
   const ellipsoids::DualNewton dual;
   Spheres sp;
@@ -649,7 +673,7 @@ void runTable(const TableOptions& t) {
       const double naiveQueries = n.peer.queries / R;
       f << csvText(machine) << ',' << nproc << ',' << date << ',' << csvText("GCC " __VERSION__) << ','
         << (t.quick ? 1 : 0) << ',' << t.seed << ',' << kBodies << ',' << kVolumeFraction << ','
-        << scene->boxLength << ',' << c.name << ',' << collision::toString(mode) << ','
+        << scene->boxLength << ',' << c.name << ',' << toString(mode) << ','
         << settingsFor(mode).viscosity << ',' << rounds << ',' << stateCount << ','
         << cold << ',' << q1(tm.cold) << ',' << q3(tm.cold) << ','
         << warm << ',' << q1(tm.warm) << ',' << q3(tm.warm) << ','
@@ -673,7 +697,7 @@ void runTable(const TableOptions& t) {
         << ratio(n.peer.iterations, n.peer.queries) << ',' << n.peer.notConverged << '\n';
       f.flush();
       if (!f) throw std::runtime_error("writing '" + t.out + "' failed");
-      std::cerr << "collisionCost: Ar " << c.name << ' ' << collision::toString(mode) << ": cold "
+      std::cerr << "collisionCost: Ar " << c.name << ' ' << toString(mode) << ": cold "
                 << std::fixed << std::setprecision(0) << cold << " us, warm " << warm
                 << " us, naive " << naive << " us per call (" << n.queries / R << " distances; "
                 << std::setprecision(1) << seconds(t1, std::chrono::steady_clock::now()) << " s)"
@@ -705,7 +729,7 @@ void setQueryCounters(benchmark::State& state, const collision::CollisionStatist
 
 void forcesBenchmark(benchmark::State& state, Case c, CollisionMode mode, bool warm) {
   Scene& scene = cachedScene(c);
-  CollisionModel model(settingsFor(mode), {});
+  CollisionModel model = modelFor(settingsFor(mode));
   std::vector<Vec3> force, torque;
   scene.next = 0;
   model.forces(scene.advance(), kContactTime, kSubDt, force, torque);  // history of a first call
@@ -720,7 +744,7 @@ void forcesBenchmark(benchmark::State& state, Case c, CollisionMode mode, bool w
 
 void naiveBenchmark(benchmark::State& state, Case c, CollisionMode mode) {
   Scene& scene = cachedScene(c);
-  const CollisionSettings settings = settingsFor(mode);
+  const Settings settings = settingsFor(mode);
   const ellipsoids::DualNewton dual;
   Spheres sp;
   std::vector<std::pair<int, int>> overlapping;
@@ -736,7 +760,7 @@ void naiveBenchmark(benchmark::State& state, Case c, CollisionMode mode) {
 
 void searchBenchmark(benchmark::State& state, Case c, CollisionMode mode) {
   Scene& scene = cachedScene(c);
-  const CollisionSettings settings = settingsFor(mode);
+  const Settings settings = settingsFor(mode);
   collision::PairSearch search;
   Spheres sp;
   long pairs = 0;
@@ -748,7 +772,7 @@ void searchBenchmark(benchmark::State& state, Case c, CollisionMode mode) {
 void registerBenchmarks() {
   for (const Case& c : kCases) {
     for (CollisionMode mode : kModes) {
-      const std::string suffix = std::string("/") + collision::toString(mode) + "/Ar:" + c.name;
+      const std::string suffix = std::string("/") + toString(mode) + "/Ar:" + c.name;
       benchmark::RegisterBenchmark(("cold" + suffix).c_str(), forcesBenchmark, c, mode, false)
           ->Unit(benchmark::kMillisecond);
       benchmark::RegisterBenchmark(("warm" + suffix).c_str(), forcesBenchmark, c, mode, true)

@@ -38,30 +38,7 @@ ellipsoids::Ellipsoid grown(const ellipsoids::Ellipsoid& e, Scalar delta) {
 }
 }  // namespace
 
-const char* toString(CollisionMode mode) {
-  switch (mode) {
-    case CollisionMode::none: return "none";
-    case CollisionMode::contact: return "contact";
-    case CollisionMode::lubricationContact: return "lubricationContact";
-  }
-  return "?";
-}
-
-CollisionMode collisionModeFromString(const std::string& name) {
-  std::string allowed;
-  for (CollisionMode m :
-       {CollisionMode::none, CollisionMode::contact, CollisionMode::lubricationContact}) {
-    if (name == toString(m)) return m;
-    allowed += (allowed.empty() ? "" : ", ") + std::string(toString(m));
-  }
-  throw std::invalid_argument("collision: unknown model '" + name + "' (allowed: " + allowed + ")");
-}
-
 void CollisionSettings::validate() const {
-  contact.validate();
-  lubrication.validate();
-  require(std::isfinite(viscosity) && viscosity >= 0,
-          "viscosity = " + std::to_string(viscosity) + " must be >= 0");
   require(kMaxOverlapRange.contains(maxOverlap),
           outOfRangeMessage("maxOverlap", maxOverlap, kMaxOverlapRange));
   require(kSubStepsPerContactRange.contains(subStepsPerContact),
@@ -72,8 +49,16 @@ void CollisionSettings::validate() const {
           outOfRangeMessage("maxSubSteps", maxSubSteps, kMaxSubStepsRange));
 }
 
-CollisionModel::CollisionModel(const CollisionSettings& settings, std::vector<PlaneWall> walls)
-    : settings_(settings), walls_(std::move(walls)) {
+CollisionModel::CollisionModel(const CollisionSettings& settings,
+                               std::unique_ptr<PairModel> pairModel,
+                               std::unique_ptr<WallModel> wallModel, std::vector<PlaneWall> walls,
+                               std::unique_ptr<FilmCorrection> film)
+    : settings_(settings),
+      pair_(std::move(pairModel)),
+      wall_(std::move(wallModel)),
+      film_(std::move(film)),
+      walls_(std::move(walls)) {
+  require(pair_ && wall_, "a collision model needs a pair model and a wall model");
   settings_.validate();
   for (const PlaneWall& w : walls_) w.validate();
 }
@@ -139,7 +124,7 @@ void CollisionModel::setHistory(const std::vector<PairRecord>& records) {
 
 int CollisionModel::subSteps(const std::vector<CollisionBody>& bodies, Scalar dt,
                              Scalar contactTime) const {
-  if (settings_.mode == CollisionMode::none || bodies.empty()) return 1;
+  if (bodies.empty()) return 1;
   require(std::isfinite(dt) && dt > 0, "time step " + std::to_string(dt) + " must be > 0");
   require(std::isfinite(contactTime) && contactTime > 0,
           "contact time " + std::to_string(contactTime) + " must be > 0");
@@ -185,9 +170,9 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
     if (i < n) lastContactForce_[i] -= c.force;
     if (j >= 0 && j < n) lastContactForce_[j] += c.force;
   }
-  if (settings_.mode == CollisionMode::none) return;
-  const bool lubrication = settings_.mode == CollisionMode::lubricationContact;
-  const bool films = filmsOn();
+  const Scalar pairActivation = pair_->lubrication().activation();
+  const Scalar wallActivation = wall_->lubrication().activation();
+  const bool films = film_ != nullptr;
 
   // reach of each body: half the largest activation gap it can take part in
   centres_.resize(n);
@@ -195,9 +180,7 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
   reach_.resize(n);
   for (int i = 0; i < n; ++i) {
     const ellipsoids::Ellipsoid& e = bodies[i].shape;
-    reach_[i] = lubrication ? 0.5 * settings_.lubrication.pairActivation *
-                                  e.maxOfMaxCurvatureRadius()
-                            : 0;
+    reach_[i] = pairActivation > 0 ? 0.5 * pairActivation * e.maxOfMaxCurvatureRadius() : 0;
     if (films) reach_[i] = std::max(reach_[i], 0.5 * bodies[i].filmGap);
     centres_[i] = e.centre();
     radii_[i] = e.maxSemiAxis() + reach_[i];
@@ -264,7 +247,7 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
       const WallDistance d = wallDistance(bodies[i].shape, walls_[w]);
       // (a body that may reach the activation gap within the sub-step too)
       const Scalar lubricationReach =
-          lubrication ? settings_.lubrication.wallActivation * bodies[i].shape.maxOfMaxCurvatureRadius() +
+          wallActivation > 0 ? wallActivation * bodies[i].shape.maxOfMaxCurvatureRadius() +
                             2 * subDt *
                                 (bodies[i].velocity.norm() +
                                  bodies[i].angularVelocity.norm() * bodies[i].shape.maxSemiAxis())
@@ -312,6 +295,8 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
                               const Vec3& n, const Vec3& p1, const Vec3& p2, Scalar contactTime,
                               Scalar subDt, std::vector<Vec3>& force, std::vector<Vec3>& torque) {
   const bool wall = j < 0;
+  const InteractionModel& model = wall ? static_cast<const InteractionModel&>(*wall_)
+                                       : static_cast<const InteractionModel&>(*pair_);
   const CollisionBody& b1 = bodies[i];
   const Vec3 point = 0.5 * (p1 + p2);
   const ContactSide s1 = sideOf(b1, point);
@@ -332,60 +317,18 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
     const Scalar cap = settings_.maxOverlap * aMin;
     const std::uint64_t k = key(i, j);
     const auto known = contact_.find(k);
-    ContactState c;
-    if (known != contact_.end()) {
-      c = known->second;
-    } else {
-      c.contactTime = contactTime;
-      if (un < 0) c.contactTime = std::min(c.contactTime, kPi * cap / -un);
-    }
+    ContactState c = known != contact_.end() ? known->second
+                                             : model.contact().firstTouch(contactTime, un, cap);
     const Scalar wInv = inverseEffectiveMass(s1, s2, n);
     if (wInv > 0) {
-      const Scalar e = settings_.contact.restitution;
-      SpringDashpot law;
-      if (c.stiffness > 0) {
-        // the spring-dashpot of the first touch (a fixed linear oscillator)
-        law = springDashpotOfStiffness(c.stiffness, e, c.contactTime);
-        c.springForce = std::max(Scalar(0), c.springForce + law.stiffness * (overlap - c.overlap));
-      } else {
-        law = springDashpot(1 / wInv, e, c.contactTime);  // the first touch (or an old restart)
-        c.springForce = law.stiffness * overlap;
-      }
-      // still approaching faster than the contact time was made for (a body
-      // swinging into the contact): the first touch's rule at the new speed,
-      // for the overlap still allowed (at least half the cap); dF = k d(delta)
-      // keeps the stiffer spring from returning more work than it took
-      const Scalar left = std::max(cap - overlap, Scalar(0.5) * cap);
-      if (un < 0 && kPi * cap < -un * c.contactTime && kPi * left < -un * c.contactTime) {
-        const Scalar shorter = kPi * left / -un;
-        const Scalar ratio = c.contactTime / shorter;
-        law.stiffness *= ratio * ratio;
-        law.damping *= ratio;
-        c.contactTime = shorter;
-        ++statistics_.stiffened;
-      }
-      // a sustained load (gravity, the flow, bodies above): a spring made for
-      // an impact's contact time can be far too soft to carry it (the static
-      // overlap of a body of weight W is W/k = g' T_c^2/(pi^2 + ln^2 e): half a
-      // semi-axis for a 4 mm body and T_c = 40 ms). The spring is stiffened so
-      // that the static load pressing the pair together overlaps it by at
-      // most half the cap: k >= 2 W/cap. W from the bodies' external forces
-      // and the contact forces of their other pairs (the last call's, less
-      // this pair's own); the spring of an impact without a load is left alone
-      const Scalar load = sustainedLoad(bodies, i, j, n, known != contact_.end() ? c.force : Vec3::Zero());
-      if (load > 0) {
-        const Scalar needed = 2 * load / cap;
-        if (needed > law.stiffness) {
-          const Scalar ratio = std::sqrt(needed / law.stiffness);
-          law.stiffness = needed;
-          law.damping *= ratio;
-          c.contactTime /= ratio;
-          ++statistics_.stiffened;
-        }
-      }
-      c.stiffness = law.stiffness;
-      c.overlap = overlap;
-      const Vec3 fContact = contactForce(c.springForce, n, relative, law, s1, s2, settings_.contact.friction, subDt);
+      // the static load pressing the pair together: the bodies' external
+      // forces and the contact forces of their other pairs (the last call's,
+      // less this pair's own)
+      const Scalar load =
+          sustainedLoad(bodies, i, j, n, known != contact_.end() ? c.force : Vec3::Zero());
+      const Scalar fn = model.contact().force(c, overlap, un, wInv, cap, load, statistics_.stiffened);
+      Vec3 fContact = fn * n;
+      model.friction().addForce(fn, n, relative, s1, s2, subDt, fContact);
       c.force = fContact;
       f2 += fContact;
     }
@@ -394,24 +337,24 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
     statistics_.maxOverlapRatio = std::max(statistics_.maxOverlapRatio, overlap / aMin);
   }
 
-  // lubrication (step 5) and the film correction (step 7), both applied
+  // lubrication and the film correction, both applied
   // implicitly by dampingForces(); the curvature radii only when the gap is
   // below the largest activation gap the radii allow (Gaussian radius <=
   // largest curvature radius) or below the film gap
   const Scalar rBound = b1.shape.maxOfMaxCurvatureRadius() +
                         (wall ? 0 : bodies[j].shape.maxOfMaxCurvatureRadius());
-  const Scalar reachBound = wall ? settings_.lubrication.wallActivation * rBound
-                                 : 0.5 * settings_.lubrication.pairActivation * rBound;
+  const Scalar activation = model.lubrication().activation();
+  const Scalar reachBound = wall ? activation * rBound : 0.5 * activation * rBound;
   // the correction is integrated over the gap path of the sub-step
   // (dampingForces): a pair enters the solve when its gap may cross the range
   // [0, activation) within the sub-step (twice the start speed's travel):
   // approaching from beyond the activation gap, or leaving a contact
   const Scalar travel = 2 * std::abs(un) * subDt;
-  const bool lubricating = settings_.mode == CollisionMode::lubricationContact &&
-                           settings_.viscosity > 0 && gap + travel >= 0 &&
+  const bool lubricating = activation > 0 && gap + travel >= 0 &&
                            gap - travel < reachBound && (gap >= 0 || un > 0) &&
                            (gap < reachBound || un < 0);
-  const Scalar filmGap = filmsOn() ? std::max(b1.filmGap, wall ? Scalar(0) : bodies[j].filmGap) : 0;
+  const Scalar filmGap =
+      film_ ? FilmCorrection::pairFilmGap(b1.filmGap, wall ? Scalar(0) : bodies[j].filmGap) : 0;
   const bool film = filmGap > 0 && gap < filmGap;
   if (lubricating || film) {
     const Scalar r1 = b1.shape.curvatureRadii(p1).gaussian;
@@ -425,20 +368,19 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
     pair.gap = gap;
     // with the radii known, the activation gap itself: a pair whose gap cannot
     // reach it within the sub-step has no lubrication to integrate
-    const Scalar activationGap = wall ? settings_.lubrication.wallActivation * r1
-                                      : 0.5 * settings_.lubrication.pairActivation * (r1 + r2);
+    const Scalar activationGap = wall ? activation * r1 : 0.5 * activation * (r1 + r2);
     if (lubricating && gap - travel < activationGap) {
       pair.lubricated = true;
       pair.radius1 = r1;
       pair.radius2 = r2;
-      pair.law = LubricationGapLaw(r1, r2, settings_.viscosity, settings_.lubrication);
+      pair.law = model.lubrication().gapLaw(r1, r2);
       pair.lubrication = pair.law.coefficient(gap);
       pair.startPrimitive = pair.law.primitive(gap);
       if (pair.lubrication > 0) ++statistics_.lubricated;
     }
     if (film) {
       const Scalar r = wall ? r1 : r1 * r2 / (r1 + r2);
-      pair.film = 6 * kPi * settings_.viscosity * r * r / std::max(gap, Scalar(0.25) * filmGap);
+      pair.film = film_->coefficient(r, gap, filmGap);
       ++statistics_.filmPairs;
     }
     if (recordDamping_ && (pair.lubricated || pair.film > 0)) damped_.push_back(pair);

@@ -1,4 +1,5 @@
 #include "collision/ContactLaw.hpp"
+#include "collision/CoulombFriction.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -43,26 +44,20 @@ SpringDashpot springDashpotOfStiffness(Scalar stiffness, Scalar restitution, Sca
   return law;
 }
 
+Scalar normalForce(Scalar elasticForce, Scalar normalSpeed, const SpringDashpot& law) {
+  const Scalar fn = elasticForce - law.damping * normalSpeed;
+  // the dashpot's tensile end belongs to the spring's unloading: once the
+  // elastic force is spent (a stiffness that rose in the contact), no pull
+  if (!(elasticForce > 0) && fn < 0) return 0;
+  return fn;
+}
+
 Vec3 contactForce(Scalar elasticForce, const Vec3& n, const Vec3& relativeVelocity,
                   const SpringDashpot& law, const ContactSide& s1, const ContactSide& s2,
                   Scalar friction, Scalar dt) {
-  const Scalar un = relativeVelocity.dot(n);
-  Scalar fn = elasticForce - law.damping * un;
-  // the dashpot's tensile end belongs to the spring's unloading: once the
-  // elastic force is spent (a stiffness that rose in the contact), no pull
-  if (!(elasticForce > 0) && fn < 0) fn = 0;
+  const Scalar fn = normalForce(elasticForce, relativeVelocity.dot(n), law);
   Vec3 force = fn * n;
-  if (friction > 0) {
-    const Vec3 ut = relativeVelocity - un * n;
-    const Scalar slip = ut.norm();
-    if (slip > 0) {
-      const Vec3 t = ut / slip;
-      const Scalar wt = inverseEffectiveMass(s1, s2, t);
-      const Scalar stop = wt > 0 ? slip / (wt * dt) : 0;
-      // on body 2 the friction opposes its slip relative to body 1
-      force -= std::min(friction * std::abs(fn), stop) * t;
-    }
-  }
+  CoulombFriction(friction).addForce(fn, n, relativeVelocity, s1, s2, dt, force);
   return force;
 }
 

@@ -66,14 +66,15 @@ Foam::bodyIntegrator::bodyIntegrator
     const PtrList<immersedBody>& bodies,
     const scalar fluidDensity,
     const label subSteps,
-    const scalar virtualMass
+    const scalar virtualMass,
+    const filmCorrection& film
 )
 :
     fluidDensity_(fluidDensity),
     subSteps_(subSteps),
     virtualMass_(virtualMass),
     g_(readGravity(mesh, bodies)),
-    collision_(collisionModel::New(properties, mesh, fluidDensity))
+    collision_(collisionModel::New(properties, mesh, film))
 {}
 
 

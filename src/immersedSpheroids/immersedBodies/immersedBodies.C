@@ -298,7 +298,8 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         wordList
         ({
             "fluidDensity", "U", "penaltyRatio", "wallCellPenalty", "subSteps",
-            "virtualMass", "bodies", "packing", "output", "collision"
+            "virtualMass", "bodies", "packing", "output", "collision",
+            "filmStabilisation", "filmGap", "viscosity"
         })
     );
     fluidDensity_ = readPositive
@@ -338,11 +339,17 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     );
 
     readBodies();
+    const filmCorrection film
+    (
+        properties_, mesh_, fluidDensity_,
+        collisionModel::selectedType(properties_) != "none"
+    );
     integrator_.reset
     (
         new bodyIntegrator
         (
-            mesh, properties_, bodies_, fluidDensity_, subSteps, virtualMass
+            mesh, properties_, bodies_, fluidDensity_, subSteps, virtualMass,
+            film
         )
     );
     ddtScheme_ = immersedSpheroids::ddtCoefficients::read(mesh, UName_);

@@ -198,8 +198,8 @@ void immersedBodiesTests::testBadInput(const Time& runTime, const fvMesh& mesh)
     (
         construct
         (
-            "collision { type lubricationContact; viscosity 1e-3;"
-            " pairActivation 2; } " + withBody(goodBody)
+            "collision { type lubricationContact;"
+            " pairActivation 2; } viscosity 1e-3; " + withBody(goodBody)
         ),
         {
             "'pairActivation'",
@@ -216,6 +216,36 @@ void immersedBodiesTests::testBadInput(const Time& runTime, const fvMesh& mesh)
         ),
         {"lubrication", "contact, lubricationContact, none", fname},
         "unknown collision type lists the allowed types"
+    );
+    expectFatalIOError
+    (
+        construct
+        (
+            "collision { type contact; pairModel hertz; } filmStabilisation no; "
+          + withBody(goodBody)
+        ),
+        {"'pairModel'", "hertz", "springDashpot, lubricatedSpringDashpot", fname},
+        "unknown pair model lists the allowed models"
+    );
+    expectFatalIOError
+    (
+        construct
+        (
+            "collision { type none; } filmStabilisation yes; "
+          + withBody(goodBody)
+        ),
+        {"'filmStabilisation'", "collision", "type", fname},
+        "film correction without a collision model"
+    );
+    expectFatalIOError
+    (
+        construct
+        (
+            "collision { type contact; } filmStabilisation no; viscosity 1e-3; "
+          + withBody(goodBody)
+        ),
+        {"'viscosity'", "remove it", fname},
+        "viscosity nothing uses"
     );
     expectFatalIOError
     (

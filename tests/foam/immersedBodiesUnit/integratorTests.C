@@ -92,13 +92,14 @@ void immersedBodiesTests::testIntegrator(const fvMesh& mesh)
     const dictionary properties = parse
     (
         "collision { type contact; restitution 0.8; friction 0.3;"
-        " contactSteps 10; filmStabilisation no; }",
+        " contactSteps 10; } filmStabilisation no;",
         "test/integrator"
     );
 
     // coupled: no fluid, no gravity, no virtual mass, no film
+    const filmCorrection film(properties, mesh, 0, true);
     autoPtr<collisionModel> coupledModel =
-        collisionModel::New(properties, mesh, 0);
+        collisionModel::New(properties, mesh, film);
     coupledBodySet set(bodies, 0, Zero, 0, 0);
     std::vector<collision::BodyState> states;
     for (const immersedBody& b : bodies)
@@ -107,12 +108,16 @@ void immersedBodiesTests::testIntegrator(const fvMesh& mesh)
     }
 
     // vacuum: the core's own
-    collision::CollisionSettings settings;
-    settings.mode = collision::CollisionMode::contact;
-    settings.contact.restitution = 0.8;
-    settings.contact.friction = 0.3;
-    settings.filmStabilisation = false;
-    collision::CollisionModel vacuumModel(settings, {});
+    collision::InteractionParameters laws;
+    laws.contact.restitution = 0.8;
+    laws.contact.friction = 0.3;
+    collision::CollisionModel vacuumModel
+    (
+        collision::CollisionSettings(),
+        collision::PairModel::New("springDashpot", laws),
+        collision::WallModel::New("springDashpot", laws),
+        {}
+    );
     std::vector<collision::RigidBody> vacuum{rigidCopy(bodies[0]), rigidCopy(bodies[1])};
 
     const collision::BodyState start0 = states[0], start1 = states[1];

@@ -1,59 +1,58 @@
 /**
  * @file CollisionModel.hpp
  * @brief Collision forces between spheroids and plane walls: pair search,
- *        overlap prefilter, certified distance, contact and lubrication.
+ *        overlap prefilter, certified distance, and the pair and wall models.
  *
  * Per call of forces() (one evaluation in a body sub-step):
  *  1. candidate pairs from bounding spheres and a cell list (PairSearch);
- *  2. prefilter: axis-aligned boxes of the bodies grown by their lubrication
- *     reach, then the Jia et al. overlap test on the grown bodies;
+ *  2. prefilter: axis-aligned boxes of the bodies grown by their reach (the
+ *     pair model's lubrication and the film gap), then the Jia et al.
+ *     overlap test on the grown bodies;
  *  3. the signed distance of the dual method to eps_d = distanceAccuracy x
- *     the pair's smallest Gaussian curvature radius (founding paper eq. 1.6),
- *     warm-started from the pair's previous direction;
- *  4. contact (ContactLaw): a linear spring-dashpot whose contact time keeps
- *     the overlap below maxOverlap a_min, stiffened under a sustained load;
- *  5. lubrication (LubricationLaw) and the film correction, recorded as
- *     damped pairs and applied implicitly by dampingForces();
- *  6. walls: the same laws against exact spheroid-plane distances.
+ *     the pair's smallest Gaussian curvature radius, warm-started from the
+ *     pair's previous direction;
+ *  4. the pair model (PairModel: normal contact, friction) on each pair in
+ *     contact; its lubrication law and the film correction (FilmCorrection,
+ *     if given) recorded as damped pairs, applied implicitly by dampingForces();
+ *  5. walls: the wall model (WallModel) against exact spheroid-plane distances.
  * SubStepper takes each body sub-step through forces() and dampingForces().
- * The laws, their constants and the measurements behind them:
- * docs/collisions.md; the scheme's accuracy: validation/dryCollisions.
- * Non-convergence of a distance is counted in statistics() (the last
- * iterate is used, its certified bracket known); a non-finite force throws.
+ * The laws and their constants: docs/collisions.md. A distance that does
+ * not converge is counted in statistics() (the last iterate is used); a
+ * non-finite force throws.
+ *
+ * Usage (CollisionSettings; defaults and ranges are its members and k...Range constants):
+ * | setting            | meaning                                       | default | range |
+ * |--------------------|-----------------------------------------------|---------|-------|
+ * | maxOverlap         | largest overlap / smallest semi-axis of the pair | 0.1  | (0, 0.5] |
+ * | subStepsPerContact | body sub-steps per contact time               | 10      | [4, 10000] |
+ * | distanceAccuracy   | eps_d / smallest Gaussian curvature radius    | 1e-5    | [1e-12, 0.1] |
+ * | maxSubSteps        | bound on the sub-steps subSteps() may ask for | 100000  | [1, 1e9] |
+ *
+ * See also: PairModel, WallModel, FilmCorrection, SubStepper.
  */
 #ifndef COLLISION_COLLISIONMODEL_HPP
 #define COLLISION_COLLISIONMODEL_HPP
 
-#include "collision/ContactLaw.hpp"
-#include "collision/LubricationLaw.hpp"
+#include "collision/FilmCorrection.hpp"
+#include "collision/PairModel.hpp"
 #include "collision/PairSearch.hpp"
 #include "collision/PlaneWall.hpp"
+#include "collision/WallModel.hpp"
 #include "ellipsoids/AutoDistance.hpp"
 #include "ellipsoids/DualNewton.hpp"
 #include "ellipsoids/Ellipsoid.hpp"
 #include "ellipsoids/OverlapTest.hpp"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
 namespace collision {
 
-enum class CollisionMode { none, contact, lubricationContact };
-
-/// "none", "contact", "lubricationContact"
-const char* toString(CollisionMode mode);
-/// @throws std::invalid_argument naming the allowed values
-CollisionMode collisionModeFromString(const std::string& name);
-
 /// The defaults are the member initialisers, the allowed values the k...Range constants.
 struct CollisionSettings {
-  CollisionMode mode = CollisionMode::contact;
-  ContactParameters contact;
-  LubricationParameters lubrication;
-  /// dynamic viscosity mu of the fluid (lubrication; >= 0)
-  Scalar viscosity = 0;
   /// largest overlap allowed, as a fraction of the pair's smallest semi-axis, in kMaxOverlapRange
   Scalar maxOverlap = 0.1;
   static constexpr Range kMaxOverlapRange{0, 0.5, true, false};
@@ -66,8 +65,6 @@ struct CollisionSettings {
   /// largest number of sub-steps subSteps() may ask for, an integer in kMaxSubStepsRange
   int maxSubSteps = 100000;
   static constexpr Range kMaxSubStepsRange{1, 1e9};
-  /// the film correction (step 7) for pairs closer than the bodies' filmGap (needs viscosity > 0)
-  bool filmStabilisation = true;
 
   /// @throws std::invalid_argument naming the parameter and its allowed range
   void validate() const;
@@ -82,7 +79,7 @@ struct CollisionBody {
   Mat3 inverseInertia = Mat3::Zero();  ///< world frame
   bool movable = true;                 ///< false: fixed (infinitely heavy)
   /// the thickness below which the flow solver cannot resolve a film at this
-  /// body (its cell size); 0: no film correction
+  /// body (its cell size; FilmCorrection); 0: no film correction
   Scalar filmGap = 0;
   /// every force on the body but the collision forces (weight less buoyancy,
   /// the flow): the sustained load it brings to its contacts
@@ -115,8 +112,8 @@ struct DampedPair {
   Vec3 normal = Vec3::Zero();   ///< unit normal from first to second
   Vec3 arm1 = Vec3::Zero();     ///< from the first body's centre to the point between the closest points
   Vec3 arm2 = Vec3::Zero();     ///< the same from the second body's centre (unused for a wall)
-  Scalar lubrication = 0;       ///< c >= 0 at the start gap (step 5): the force on second -c u_n normal
-  Scalar film = 0;              ///< D >= 0 (step 7): the force on second -D (u_n - u_n,ref) normal
+  Scalar lubrication = 0;       ///< c >= 0 at the start gap: the force on second -c u_n normal
+  Scalar film = 0;              ///< D >= 0 (FilmCorrection): the force on second -D (u_n - u_n,ref) normal
   /// the lubrication correction applies over this sub-step: its impulse is the
   /// integral of c over the gap path from gap to gap + u_n(end) subDt
   bool lubricated = false;
@@ -148,17 +145,28 @@ struct PairRecord {
 
 class CollisionModel {
  public:
-  /// @throws std::invalid_argument on invalid settings or walls
-  CollisionModel(const CollisionSettings& settings, std::vector<PlaneWall> walls);
+  /**
+   * @param pairModel the interaction of two bodies
+   * @param wallModel the interaction of a body and a wall
+   * @param film the film correction, or nullptr for none (no film pairs are recorded)
+   * @throws std::invalid_argument on invalid settings or walls, or a missing model
+   */
+  CollisionModel(const CollisionSettings& settings, std::unique_ptr<PairModel> pairModel,
+                 std::unique_ptr<WallModel> wallModel, std::vector<PlaneWall> walls,
+                 std::unique_ptr<FilmCorrection> film = nullptr);
 
   const CollisionSettings& settings() const { return settings_; }
+  const PairModel& pairModel() const { return *pair_; }
+  const WallModel& wallModel() const { return *wall_; }
+  /// the film correction, nullptr if none
+  const FilmCorrection* filmCorrection() const { return film_.get(); }
   const std::vector<PlaneWall>& walls() const { return walls_; }
 
   /**
    * Sub-steps a fluid step dt needs (>= 1): dt/subSteps <= T_c,min/subStepsPerContact
    * with T_c,min the shorter of the contact time of the fastest possible impact
    * (twice the largest body speed plus rotation) and the contact times of the
-   * contacts under way. 1 when the mode is none.
+   * contacts under way. 1 without bodies.
    * @throws std::runtime_error if more than maxSubSteps would be needed
    */
   int subSteps(const std::vector<CollisionBody>& bodies, Scalar dt, Scalar contactTime) const;
@@ -230,7 +238,6 @@ class CollisionModel {
   std::size_t activeContacts() const { return contact_.size(); }
 
  private:
-  bool filmsOn() const { return settings_.filmStabilisation && settings_.viscosity > 0; }
   /// The static load (N) pressing bodies i and j (j < 0: a wall) together
   /// along n (from i to j), from their external forces and their other
   /// contacts; ownForce: this pair's last contact force on j
@@ -252,6 +259,9 @@ class CollisionModel {
                 std::vector<Vec3>& force, std::vector<Vec3>& torque);
 
   CollisionSettings settings_;
+  std::unique_ptr<PairModel> pair_;
+  std::unique_ptr<WallModel> wall_;
+  std::unique_ptr<FilmCorrection> film_;
   std::vector<PlaneWall> walls_;
   PairSearch search_;
   ellipsoids::DualNewton dual_;
@@ -264,14 +274,6 @@ class CollisionModel {
   std::vector<Vec3> halfExtent_;  ///< axis-aligned half extents of grown_
   /// warm-start direction of each pair seen last call
   std::unordered_map<std::uint64_t, Vec3> direction_, nextDirection_;
-  /// What a contact under way carries from call to call.
-  struct ContactState {
-    Scalar contactTime = 0;  ///< T_c of the contact (shortened if the overlap needs it)
-    Scalar springForce = 0;  ///< elastic normal force, updated incrementally
-    Scalar stiffness = 0;    ///< k_n of the contact (0: set at the next call)
-    Scalar overlap = 0;      ///< overlap of the last call
-    Vec3 force = Vec3::Zero();  ///< the contact force on the second body in the last call
-  };
   /// the state of each pair in contact
   std::unordered_map<std::uint64_t, ContactState> contact_, nextContact_;
   CollisionStatistics statistics_;

@@ -1,7 +1,8 @@
 /**
  * @file ContactLaw.hpp
  * @brief Soft contact: linear spring-dashpot in the normal direction with the
- *        rotation-aware effective mass, regularised Coulomb friction.
+ *        rotation-aware effective mass (the functions SpringDashpotContact
+ *        and the friction laws use).
  *
  * Normal force on body 2 (n from body 1 to body 2, overlap delta > 0, normal
  * relative speed u_n = (v_2 - v_1).n at the contact point):
@@ -16,13 +17,10 @@
  * the contact point is still e (with 1/m_eff = 1/m_1 + 1/m_2 it is not).
  * The law is kept to the end of the contact (delta back to 0), the short
  * tensile end of the linear law included: it is what makes the restitution e.
- * m_eff changes while a turning body moves the contact point; CollisionModel
- * keeps k_n and eta_n of the first touch for the whole contact (a k_n that
- * follows m_eff is not conservative).
- * Tangential: F_t = -min(mu |F_n|, m_t |u_t|/dt) t, t = u_t/|u_t| the slip
- * direction at the contact point and m_t its effective mass along t: Coulomb
- * sliding friction that at most stops the slip within the sub-step dt (no
- * tangential spring: sticking is not held against a steady load).
+ * m_eff changes while a turning body moves the contact point;
+ * SpringDashpotContact keeps k_n and eta_n of the first touch for the whole
+ * contact (a k_n that follows m_eff is not conservative).
+ * Tangential: CoulombFriction.
  */
 #ifndef COLLISION_CONTACTLAW_HPP
 #define COLLISION_CONTACTLAW_HPP
@@ -68,10 +66,17 @@ SpringDashpot springDashpot(Scalar effectiveMass, Scalar restitution, Scalar con
 SpringDashpot springDashpotOfStiffness(Scalar stiffness, Scalar restitution, Scalar contactTime);
 
 /**
- * The contact force on body 2 (body 1 gets minus it): (F_e - eta_n u_n) n plus friction.
+ * The normal force on body 2 along n, F_e - eta_n u_n; at F_e = 0 the dashpot
+ * may push but not pull (the dashpot's tensile end belongs to the spring's
+ * unloading: once the elastic force is spent, no pull).
+ */
+Scalar normalForce(Scalar elasticForce, Scalar normalSpeed, const SpringDashpot& law);
+
+/**
+ * The contact force on body 2 (body 1 gets minus it): normalForce() n plus
+ * CoulombFriction(friction).
  * @param elasticForce the spring's force F_e >= 0: k_n delta for a constant
- *        stiffness (CollisionModel integrates it incrementally, see there);
- *        at F_e = 0 the dashpot may push but not pull
+ *        stiffness (SpringDashpotContact integrates it incrementally)
  * @param n unit normal from 1 to 2
  * @param relativeVelocity (v_2 - v_1) at the contact point
  */

@@ -10,12 +10,7 @@ License
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
-Foam::autoPtr<Foam::collisionModel> Foam::collisionModel::New
-(
-    const dictionary& properties,
-    const fvMesh& mesh,
-    const scalar fluidDensity
-)
+Foam::word Foam::collisionModel::selectedType(const dictionary& properties)
 {
     using namespace immersedSpheroids;
 
@@ -23,14 +18,9 @@ Foam::autoPtr<Foam::collisionModel> Foam::collisionModel::New
     (
         commaList(dictionaryConstructorTablePtr_->sortedToc())
     );
-
     if (!properties.found("collision"))
     {
-        // no collision entry: the model none (no cost)
-        return dictionaryConstructorTablePtr_->cfind("none")()
-        (
-            dictionary::null, mesh, fluidDensity
-        );
+        return "none";
     }
     if (!properties.isDict("collision"))
     {
@@ -46,9 +36,7 @@ Foam::autoPtr<Foam::collisionModel> Foam::collisionModel::New
     (
         readChecked<word>(dict, "type", "a collision model (" + allowed + ")")
     );
-
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
-    if (!cstrIter.found())
+    if (!dictionaryConstructorTablePtr_->found(modelType))
     {
         FatalIOErrorInLookup
         (
@@ -60,7 +48,28 @@ Foam::autoPtr<Foam::collisionModel> Foam::collisionModel::New
             << modelType << "'; allowed: " << allowed.c_str() << nl
             << exit(FatalIOError);
     }
-    return cstrIter()(dict, mesh, fluidDensity);
+    return modelType;
+}
+
+
+Foam::autoPtr<Foam::collisionModel> Foam::collisionModel::New
+(
+    const dictionary& properties,
+    const fvMesh& mesh,
+    const filmCorrection& film
+)
+{
+    const word modelType(selectedType(properties));
+    const dictionary& dict =
+        properties.found("collision")
+      ? properties.subDict("collision")
+      : dictionary::null;
+    autoPtr<collisionModel> model
+    (
+        dictionaryConstructorTablePtr_->cfind(modelType)()(dict, mesh, film)
+    );
+    film.checkViscosityUsed();
+    return model;
 }
 
 

@@ -12,13 +12,9 @@ License
 #include "collision/Range.hpp"
 #include "planeWalls.H"
 #include "dictionaryChecks.H"
-#include "IOdictionary.H"
-#include "volMesh.H"
-#include "dimensionedScalar.H"
 #include "addToRunTimeSelectionTable.H"
 
-#include <cmath>
-#include <limits>
+#include <memory>
 #include <stdexcept>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -44,96 +40,94 @@ using namespace Foam;
 constexpr scalar contactStepsDefault = 10;
 constexpr collision::Range contactStepsRange{1e-3, 1e6};
 
-//- The film gap: the filmGap entry, else the smallest cell size of the mesh
-//  (the cube root of the smallest cell volume, over all ranks)
-scalar readFilmGap(const dictionary& dict, const fvMesh& mesh)
+//- Does the named pair or wall model have a lubrication law?
+bool lubricated(const word& model)
 {
-    const string expected =
-        "the film thickness below which the mesh cannot resolve the flow"
-        " between two surfaces [m] > 0 (default: the smallest cell size)";
-    if (dict.found("filmGap"))
-    {
-        return immersedSpheroids::readPositive(dict, "filmGap", expected);
-    }
-    scalar vMin = GREAT;
-    for (const scalar v : mesh.V().field())
-    {
-        vMin = min(vMin, v);
-    }
-    reduce(vMin, minOp<scalar>());
-    return std::cbrt(vMin);
+    return model == "lubricatedSpringDashpot";
 }
 
-//- The dynamic viscosity: the viscosity entry, else rho_f nu of
-//  constant/transportProperties
-scalar readViscosity
+//- Read a model name (pairModel, wallModel) and check it against the names
+//  the core's factory builds
+word readModelName
 (
     const dictionary& dict,
-    const fvMesh& mesh,
-    const scalar fluidDensity
+    const word& keyword,
+    const word& deflt,
+    const std::vector<std::string>& names
 )
 {
-    const string expected =
-        "the dynamic viscosity mu [Pa s] > 0 (default: fluidDensity x nu of"
-        " constant/transportProperties)";
-    if (dict.found("viscosity"))
+    wordList allowed;
+    for (const std::string& n : names)
     {
-        return immersedSpheroids::readPositive(dict, "viscosity", expected);
+        allowed.append(word(n));
     }
-    IOdictionary transport
+    const string expected =
+        immersedSpheroids::commaList(allowed) + " (default " + deflt + ")";
+    const word name
     (
-        IOobject
+        immersedSpheroids::readCheckedOrDefault<word>
         (
-            "transportProperties",
-            mesh.time().constant(),
-            mesh,
-            IOobject::READ_IF_PRESENT,
-            IOobject::NO_WRITE,
-            false
+            dict, keyword, deflt, expected
         )
     );
-    if (!transport.found("nu"))
+    if (!allowed.found(name))
     {
         immersedSpheroids::entryError
         (
-            dict, "viscosity",
-            "is missing and " + transport.objectPath()
-          + " has no entry nu; expected " + expected
+            dict, keyword, "is " + name + "; allowed: " + expected
         );
     }
-    const dimensionedScalar nu("nu", dimViscosity, transport);
-    if (!(nu.value() > 0))
-    {
-        immersedSpheroids::entryError
-        (
-            transport, "nu",
-            "must be > 0 for the lubrication force and the film correction"
-        );
-    }
-    return fluidDensity*nu.value();
+    return name;
 }
 
 } // End anonymous namespace
 
 
-// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-::collision::CollisionSettings Foam::collisionModels::contact::readSettings
+Foam::collisionModels::contact::contact
 (
     const dictionary& dict,
     const fvMesh& mesh,
-    const scalar fluidDensity,
-    const collision::CollisionMode mode
+    const filmCorrection& film,
+    const word& defaultModel
 )
+:
+    collisionModel(mesh),
+    contactSteps_
+    (
+        immersedSpheroids::readOptionalInRange<scalar>
+        (
+            dict, "contactSteps", contactStepsDefault, contactStepsRange,
+            "the contact time over the fluid time step, T_c/deltaT,"
+        )
+    ),
+    model_(),
+    filmGap_(film.filmGap())
 {
     using namespace immersedSpheroids;
-    const bool lubrication = mode == collision::CollisionMode::lubricationContact;
+
+    const word pairName
+    (
+        readModelName
+        (
+            dict, "pairModel", defaultModel, collision::PairModel::names()
+        )
+    );
+    const word wallName
+    (
+        readModelName
+        (
+            dict, "wallModel", defaultModel, collision::WallModel::names()
+        )
+    );
+    const bool lubrication = lubricated(pairName) || lubricated(wallName);
 
     wordList allowed
     ({
         "type", "walls", "restitution", "friction", "contactSteps",
         "subStepsPerContact", "maxOverlap", "distanceAccuracy", "maxSubSteps",
-        "filmStabilisation", "filmGap", "viscosity"
+        "pairModel", "wallModel"
     });
     if (lubrication)
     {
@@ -144,23 +138,25 @@ scalar readViscosity
     }
     checkKeywords(dict, allowed);
 
-    // The defaults are those of a default-constructed settings struct, the
-    // ranges its constants: validate() checks the same numbers
+    // The defaults are those of default-constructed settings and
+    // parameters, the ranges their constants: the core checks the same
+    // numbers
     using Settings = collision::CollisionSettings;
     using Contact = collision::ContactParameters;
     using Lubrication = collision::LubricationParameters;
     const Settings defaults;
+    const collision::InteractionParameters lawDefaults;
 
     Settings s;
-    s.mode = mode;
-    s.contact.restitution = readOptionalInRange<scalar>
+    collision::InteractionParameters p;
+    p.contact.restitution = readOptionalInRange<scalar>
     (
-        dict, "restitution", defaults.contact.restitution,
+        dict, "restitution", lawDefaults.contact.restitution,
         Contact::kRestitutionRange, "the dry restitution coefficient e"
     );
-    s.contact.friction = readOptionalInRange<scalar>
+    p.contact.friction = readOptionalInRange<scalar>
     (
-        dict, "friction", defaults.contact.friction,
+        dict, "friction", lawDefaults.contact.friction,
         Contact::kFrictionRange, "the Coulomb friction coefficient"
     );
     s.subStepsPerContact = label
@@ -192,58 +188,47 @@ scalar readViscosity
             "the largest number of body sub-steps per fluid step"
         )
     );
-    s.filmStabilisation = readCheckedOrDefault<bool>
-    (
-        dict, "filmStabilisation", defaults.filmStabilisation,
-        string("yes or no (default ")
-      + (defaults.filmStabilisation ? "yes" : "no")
-      + "): the film correction for the pairs closer than filmGap"
-    );
-    if (!s.filmStabilisation && dict.found("filmGap"))
-    {
-        entryError
-        (
-            dict, "filmGap",
-            "is used only with filmStabilisation yes (it is no here); remove it"
-        );
-    }
-    if (!lubrication && !s.filmStabilisation && dict.found("viscosity"))
-    {
-        entryError
-        (
-            dict, "viscosity",
-            "is used only by type lubricationContact or by filmStabilisation"
-            " yes (here type contact, filmStabilisation no); remove it"
-        );
-    }
-    if (lubrication || s.filmStabilisation)
-    {
-        s.viscosity = readViscosity(dict, mesh, fluidDensity);
-    }
     if (lubrication)
     {
-        s.lubrication.saturation = readOptionalInRange<scalar>
+        p.lubrication.saturation = readOptionalInRange<scalar>
         (
-            dict, "saturation", defaults.lubrication.saturation,
+            dict, "saturation", lawDefaults.lubrication.saturation,
             Lubrication::kSaturationRange,
             "the saturation gap ratio eps_sat"
         );
-        s.lubrication.pairActivation = readOptionalInRange<scalar>
+        p.lubrication.pairActivation = readOptionalInRange<scalar>
         (
-            dict, "pairActivation", defaults.lubrication.pairActivation,
-            s.lubrication.activationRange(),
+            dict, "pairActivation", lawDefaults.lubrication.pairActivation,
+            p.lubrication.activationRange(),
             "the pair activation gap ratio 2h/(R1 + R2), above saturation,"
         );
-        s.lubrication.wallActivation = readOptionalInRange<scalar>
+        p.lubrication.wallActivation = readOptionalInRange<scalar>
         (
-            dict, "wallActivation", defaults.lubrication.wallActivation,
-            s.lubrication.activationRange(),
+            dict, "wallActivation", lawDefaults.lubrication.wallActivation,
+            p.lubrication.activationRange(),
             "the wall activation gap ratio h/R, above saturation,"
         );
+        p.viscosity = film.viscosity();
     }
+    std::vector<collision::PlaneWall> walls
+    (
+        immersedSpheroids::planeWalls(mesh, dict, "walls")
+    );
     try
     {
-        s.validate();
+        model_.reset
+        (
+            new collision::CollisionModel
+            (
+                s,
+                collision::PairModel::New(pairName, p),
+                collision::WallModel::New(wallName, p),
+                std::move(walls),
+                film.active()
+              ? std::make_unique<collision::FilmCorrection>(film.viscosity())
+              : nullptr
+            )
+        );
     }
     catch (const std::exception& err)
     {
@@ -251,59 +236,27 @@ scalar readViscosity
             << "Invalid collision settings in " << dict.name() << ": "
             << err.what() << nl << exit(FatalIOError);
     }
-    return s;
-}
 
-
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
-
-Foam::collisionModels::contact::contact
-(
-    const dictionary& dict,
-    const fvMesh& mesh,
-    const scalar fluidDensity,
-    const collision::CollisionMode mode
-)
-:
-    collisionModel(mesh),
-    contactSteps_
-    (
-        immersedSpheroids::readOptionalInRange<scalar>
-        (
-            dict, "contactSteps", contactStepsDefault, contactStepsRange,
-            "the contact time over the fluid time step, T_c/deltaT,"
-        )
-    ),
-    model_
-    (
-        readSettings(dict, mesh, fluidDensity, mode),
-        immersedSpheroids::planeWalls(mesh, dict, "walls")
-    ),
-    filmGap_
-    (
-        model_.settings().filmStabilisation ? readFilmGap(dict, mesh) : 0
-    )
-{
-    const collision::CollisionSettings& s = model_.settings();
-    Info<< "immersedBodies: collision model " << collision::toString(s.mode)
-        << ": e " << s.contact.restitution << ", friction "
-        << s.contact.friction << ", T_c = " << contactSteps_ << " deltaT, "
+    Info<< "immersedBodies: collision model " << dict.get<word>("type")
+        << ": pair model " << pairName << ", wall model " << wallName
+        << ", e " << p.contact.restitution << ", friction "
+        << p.contact.friction << ", T_c = " << contactSteps_ << " deltaT, "
         << s.subStepsPerContact << " sub-steps per contact, max overlap "
         << s.maxOverlap << " a_min, eps_d " << s.distanceAccuracy << " R_G";
-    if (s.mode == collision::CollisionMode::lubricationContact)
+    if (lubrication)
     {
-        Info<< ", lubrication: mu " << s.viscosity << ", activation "
-            << s.lubrication.pairActivation << " (pairs) "
-            << s.lubrication.wallActivation << " (walls), saturation "
-            << s.lubrication.saturation;
+        Info<< ", lubrication: mu " << p.viscosity << ", activation "
+            << p.lubrication.pairActivation << " (pairs) "
+            << p.lubrication.wallActivation << " (walls), saturation "
+            << p.lubrication.saturation;
     }
-    if (s.filmStabilisation)
+    if (film.active())
     {
-        Info<< ", film correction below " << filmGap_ << " m (mu " << s.viscosity
-            << ")";
+        Info<< ", film correction below " << filmGap_ << " m (mu "
+            << film.viscosity() << ")";
     }
     Info<< ", walls (";
-    for (const collision::PlaneWall& w : model_.walls())
+    for (const collision::PlaneWall& w : model_->walls())
     {
         Info<< ' ' << w.name << " n = " << immersedSpheroids::toFoam(w.normal);
     }
@@ -315,10 +268,10 @@ Foam::collisionModels::contact::contact
 (
     const dictionary& dict,
     const fvMesh& mesh,
-    const scalar fluidDensity
+    const filmCorrection& film
 )
 :
-    contact(dict, mesh, fluidDensity, collision::CollisionMode::contact)
+    contact(dict, mesh, film, "springDashpot")
 {}
 
 
@@ -339,7 +292,7 @@ Foam::label Foam::collisionModels::contact::subSteps
     }
     try
     {
-        return model_.subSteps(collisionBodies, dt, contactSteps_*dt);
+        return model_->subSteps(collisionBodies, dt, contactSteps_*dt);
     }
     catch (const std::exception& err)
     {
@@ -354,20 +307,24 @@ Foam::label Foam::collisionModels::contact::subSteps
 
 void Foam::collisionModels::contact::report(const label nSubSteps)
 {
-    const collision::CollisionStatistics& st = model_.statistics();
+    const collision::CollisionStatistics& st = model_->statistics();
     const scalar calls = max(evaluations_, 1);
     Info<< "collisions: " << nSubSteps << " sub-step(s), per evaluation "
         << st.candidatePairs/calls << " candidate pairs, "
         << st.prefilterRejected/calls << " out of reach by the overlap test, "
         << st.distanceQueries/calls << " distances ("
         << (st.distanceQueries ? scalar(st.distanceIterations)/st.distanceQueries : 0)
-        << " iterations each); in contact now " << model_.activeContacts()
+        << " iterations each); in contact now " << model_->activeContacts()
         << ", max overlap " << st.maxOverlapRatio << " a_min";
-    if (model_.settings().mode == collision::CollisionMode::lubricationContact)
+    if
+    (
+        model_->pairModel().lubrication().activation() > 0
+     || model_->wallModel().lubrication().activation() > 0
+    )
     {
         Info<< ", lubricated " << st.lubricated/calls;
     }
-    if (model_.settings().filmStabilisation)
+    if (model_->filmCorrection())
     {
         Info<< ", film pairs " << st.filmPairs/calls;
     }
@@ -398,10 +355,10 @@ void Foam::collisionModels::contact::report(const label nSubSteps)
         WarningInFunction
             << st.distanceNotConverged << " distance queries of this step did"
             << " not converge to distanceAccuracy "
-            << model_.settings().distanceAccuracy
+            << model_->settings().distanceAccuracy
             << "; their last iterate (certified bracket) was used" << endl;
     }
-    model_.resetStatistics();
+    model_->resetStatistics();
     evaluations_ = 0;
 }
 
@@ -452,7 +409,7 @@ void Foam::collisionModels::contact::readHistory(const dictionary& dict)
     }
     try
     {
-        model_.setHistory(history);
+        model_->setHistory(history);
     }
     catch (const std::exception& err)
     {
@@ -463,7 +420,7 @@ void Foam::collisionModels::contact::readHistory(const dictionary& dict)
 
 void Foam::collisionModels::contact::writeHistory(Ostream& os) const
 {
-    const std::vector<collision::PairRecord> history = model_.history();
+    const std::vector<collision::PairRecord> history = model_->history();
     List<FixedList<scalar, 13>> records(label(history.size()));
     forAll(records, i)
     {

@@ -26,10 +26,10 @@ Foam::collisionModels::lubricationContact::lubricationContact
 (
     const dictionary& dict,
     const fvMesh& mesh,
-    const scalar fluidDensity
+    const filmCorrection& film
 )
 :
-    contact(dict, mesh, fluidDensity, collision::CollisionMode::lubricationContact)
+    contact(dict, mesh, film, "lubricatedSpringDashpot")
 {}
 
 

@@ -27,7 +27,7 @@ Foam::collisionModels::none::none
 (
     const dictionary& dict,
     const fvMesh& mesh,
-    const scalar
+    const filmCorrection&
 )
 :
     collisionModel(mesh)

@@ -1,0 +1,54 @@
+/**
+ * @file FilmCorrection.hpp
+ * @brief The film correction of the coupling's lagged hydrodynamic force
+ *        for pairs closer than their film gap.
+ *
+ * The flow solver's force responds to the velocities at the start of its
+ * step; in a film thinner than a cell it damps the relative normal motion
+ * far more than m/dt allows, and a lagged damping makes the body oscillate
+ * with growing amplitude. A pair (walls included) whose gap h is below its
+ * film gap gets the force -D (u_n - u_n,ref) n, implicit in the end velocity
+ * (CollisionModel::dampingForces), with
+ *     D = 6 pi mu R^2/max(h, filmGap/4),
+ * R the reduced Gaussian curvature radius at the closest points (a wall: the
+ * body's). Each body carries its film gap (CollisionBody::filmGap, 0: none);
+ * a pair's is the larger of its bodies'.
+ *
+ * Usage: constructed by the caller with the viscosity mu > 0 [Pa s] and given
+ * to CollisionModel (none: no film correction).
+ *
+ * See also: CollisionModel, docs/collisions.md.
+ */
+#ifndef COLLISION_FILMCORRECTION_HPP
+#define COLLISION_FILMCORRECTION_HPP
+
+#include "collision/Types.hpp"
+
+#include <algorithm>
+
+namespace collision {
+
+class FilmCorrection {
+ public:
+  /// @throws std::invalid_argument unless viscosity is finite and > 0
+  explicit FilmCorrection(Scalar viscosity);
+
+  Scalar viscosity() const { return viscosity_; }
+
+  /// The film gap of a pair from its bodies' (a wall has none: 0).
+  static Scalar pairFilmGap(Scalar filmGap1, Scalar filmGap2) {
+    return std::max(filmGap1, filmGap2);
+  }
+
+  /// D for the reduced radius r at the gap h below the pair's film gap.
+  Scalar coefficient(Scalar r, Scalar gap, Scalar filmGap) const {
+    return 6 * kPi * viscosity_ * r * r / std::max(gap, Scalar(0.25) * filmGap);
+  }
+
+ private:
+  Scalar viscosity_;
+};
+
+}  // namespace collision
+
+#endif

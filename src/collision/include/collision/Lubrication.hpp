@@ -1,0 +1,32 @@
+/**
+ * @file Lubrication.hpp
+ * @brief The normal lubrication correction of a pair or wall model: the
+ *        interface of the lubrication laws.
+ *
+ * A law acts below its activation gap ratio (pairs: 2h/(R1 + R2), walls:
+ * h/R, with R the Gaussian curvature radii at the closest points) and gives,
+ * for one pair of radii, its coefficient against the gap (LubricationGapLaw),
+ * which CollisionModel::dampingForces applies implicitly.
+ * Implementations: NoLubrication, StokesLubrication.
+ */
+#ifndef COLLISION_LUBRICATION_HPP
+#define COLLISION_LUBRICATION_HPP
+
+#include "collision/LubricationLaw.hpp"
+
+namespace collision {
+
+class Lubrication {
+ public:
+  virtual ~Lubrication() = default;
+
+  /// The gap ratio below which the law acts; 0: it never acts (no reach).
+  virtual Scalar activation() const = 0;
+
+  /// The law of one pair against its gap; r1, r2 the curvature radii (r2 = infinity: a wall).
+  virtual LubricationGapLaw gapLaw(Scalar r1, Scalar r2) const = 0;
+};
+
+}  // namespace collision
+
+#endif

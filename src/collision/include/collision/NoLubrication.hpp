@@ -1,0 +1,23 @@
+/**
+ * @file NoLubrication.hpp
+ * @brief No lubrication correction (activation 0: the bodies are not grown
+ *        for it and no pair is recorded for it).
+ *
+ * See also: Lubrication, StokesLubrication.
+ */
+#ifndef COLLISION_NOLUBRICATION_HPP
+#define COLLISION_NOLUBRICATION_HPP
+
+#include "collision/Lubrication.hpp"
+
+namespace collision {
+
+class NoLubrication : public Lubrication {
+ public:
+  Scalar activation() const override { return 0; }
+  LubricationGapLaw gapLaw(Scalar, Scalar) const override { return LubricationGapLaw(); }
+};
+
+}  // namespace collision
+
+#endif

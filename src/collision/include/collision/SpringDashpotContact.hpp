@@ -1,0 +1,66 @@
+/**
+ * @file SpringDashpotContact.hpp
+ * @brief The normal contact: a linear spring-dashpot (ContactLaw.hpp) with
+ *        its contact time, the overlap cap and the sustained-load rule.
+ *
+ * At the first touch the contact time is the nominal T_c, shortened to
+ * pi cap/u_n for a fast impact (the overlap stays below the cap); k_n and
+ * eta_n follow from the effective mass and are kept for the whole contact,
+ * the elastic force integrated incrementally (dF = k_n d(delta)). A body
+ * still approaching faster than the contact time was made for gets the
+ * first touch's rule at its new speed for the overlap still allowed, and a
+ * sustained load W pressing the pair together stiffens the spring to
+ * k_n >= 2 W/cap (the static overlap at most half the cap).
+ *
+ * Usage: restitution e is ContactParameters::restitution (default 0.97, in
+ * kRestitutionRange); the cap (maxOverlap x the smallest semi-axis) and the
+ * nominal T_c come from CollisionModel.
+ *
+ * See also: PairModel, WallModel, CollisionModel; docs/collisions.md.
+ */
+#ifndef COLLISION_SPRINGDASHPOTCONTACT_HPP
+#define COLLISION_SPRINGDASHPOTCONTACT_HPP
+
+#include "collision/ContactLaw.hpp"
+
+namespace collision {
+
+/// What a contact under way carries from call to call.
+struct ContactState {
+  Scalar contactTime = 0;  ///< T_c of the contact (shortened if the overlap needs it)
+  Scalar springForce = 0;  ///< elastic normal force, updated incrementally
+  Scalar stiffness = 0;    ///< k_n of the contact (0: set at the next call)
+  Scalar overlap = 0;      ///< overlap of the last call
+  Vec3 force = Vec3::Zero();  ///< the contact force on the second body in the last call
+};
+
+class SpringDashpotContact {
+ public:
+  /// @throws std::invalid_argument if restitution is outside ContactParameters::kRestitutionRange
+  explicit SpringDashpotContact(Scalar restitution);
+
+  Scalar restitution() const { return restitution_; }
+
+  /// The state of a first touch at normal speed un (< 0: approaching) with the nominal contact time.
+  ContactState firstTouch(Scalar contactTime, Scalar un, Scalar cap) const;
+
+  /**
+   * Advance the state c to the overlap and return the normal force on body 2
+   * along n (normalForce()); sets c's stiffness, overlap, spring force and
+   * contact time (not its force).
+   * @param un normal relative speed at the contact point
+   * @param inverseMass 1/m_eff along n (> 0)
+   * @param cap the largest overlap allowed
+   * @param load the sustained load pressing the pair together (N, >= 0)
+   * @param stiffened incremented for each stiffening of the spring
+   */
+  Scalar force(ContactState& c, Scalar overlap, Scalar un, Scalar inverseMass, Scalar cap,
+               Scalar load, long& stiffened) const;
+
+ private:
+  Scalar restitution_;
+};
+
+}  // namespace collision
+
+#endif

@@ -559,4 +559,34 @@ void CollisionModel::dampingForces(const std::vector<CollisionBody>& bodies,
   }
 }
 
+std::vector<CollisionModel::Overlap> CollisionModel::overlaps(
+    const std::vector<CollisionBody>& bodies, Scalar ratio) {
+  std::vector<Overlap> found;
+  const int n = static_cast<int>(bodies.size());
+  std::vector<Vec3> centres(n);
+  std::vector<Scalar> radii(n);
+  for (int i = 0; i < n; ++i) {
+    centres[i] = bodies[i].shape.centre();
+    radii[i] = bodies[i].shape.maxSemiAxis();
+  }
+  for (const auto& [i, j] : search_.find(centres, radii)) {
+    const ellipsoids::Ellipsoid& e1 = bodies[i].shape;
+    const ellipsoids::Ellipsoid& e2 = bodies[j].shape;
+    if (overlap_.test(e1, e2) == ellipsoids::OverlapStatus::separated) continue;
+    ellipsoids::DistanceOptions options;
+    options.epsD = settings_.distanceAccuracy * std::min(e1.minGaussianRadius(), e2.minGaussianRadius());
+    const ellipsoids::DistanceResult r = dual_.distance(e1, e2, options);
+    const Scalar aMin = std::min(e1.minSemiAxis(), e2.minSemiAxis());
+    if (-r.distance > ratio * aMin) found.push_back(Overlap{i, j, -r.distance / aMin});
+  }
+  for (int i = 0; i < n; ++i) {
+    for (int w = 0; w < static_cast<int>(walls_.size()); ++w) {
+      const Scalar gap = wallDistance(bodies[i].shape, walls_[w]).distance;
+      const Scalar aMin = bodies[i].shape.minSemiAxis();
+      if (-gap > ratio * aMin) found.push_back(Overlap{i, -1 - w, -gap / aMin});
+    }
+  }
+  return found;
+}
+
 }  // namespace collision

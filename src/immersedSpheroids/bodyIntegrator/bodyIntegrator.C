@@ -80,6 +80,25 @@ Foam::bodyIntegrator::bodyIntegrator
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::bodyIntegrator::checkOverlaps
+(
+    PtrList<immersedBody>& bodies,
+    const bool restarted
+)
+{
+    const coupledBodySet set
+    (
+        bodies, fluidDensity_, g_, virtualMass_, collision_->filmGap()
+    );
+    std::vector<collision::BodyState> states;
+    for (const immersedBody& body : bodies)
+    {
+        states.push_back(immersedSpheroids::toCore(body.state()));
+    }
+    collision_->checkOverlaps(set, states, restarted);
+}
+
+
 void Foam::bodyIntegrator::advance
 (
     PtrList<immersedBody>& bodies,

@@ -47,6 +47,12 @@ std::size_t Foam::coupledBodySet::size() const
 }
 
 
+std::string Foam::coupledBodySet::name(std::size_t i) const
+{
+    return bodies_[i].name();
+}
+
+
 collision::CollisionBody Foam::coupledBodySet::collisionBody
 (
     std::size_t i,

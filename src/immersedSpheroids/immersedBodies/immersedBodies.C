@@ -370,6 +370,7 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
       : "at the start (from " + properties_.objectPath() + ")"
     );
     checkReplicatedState(bodies_, start);
+    integrator_->checkOverlaps(bodies_, restarted);
     checkInsideMesh(mesh, bodies_, start);
     checkResolution(mesh, bodies_);
 

@@ -16,6 +16,7 @@
 #include "collision/RigidBodyStep.hpp"
 
 #include <cstddef>
+#include <string>
 
 namespace collision {
 
@@ -24,6 +25,9 @@ class BodySet {
   virtual ~BodySet() = default;
 
   virtual std::size_t size() const = 0;
+
+  /// Body i's name for messages.
+  virtual std::string name(std::size_t i) const { return "body " + std::to_string(i); }
 
   /// Body i at the state s as the collision model sees it.
   virtual CollisionBody collisionBody(std::size_t i, const BodyState& s) const = 0;

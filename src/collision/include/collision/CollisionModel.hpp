@@ -237,6 +237,23 @@ class CollisionModel {
   /// Pairs in contact now (body-body and body-wall; walls are -1 - wall index).
   std::size_t activeContacts() const { return contact_.size(); }
 
+  /// A pair that overlaps: bodies first and second (-1 - wall index for a
+  /// wall), the overlap over the pair's smallest semi-axis.
+  struct Overlap {
+    int first = 0;
+    int second = 0;
+    Scalar ratio = 0;
+  };
+
+  /**
+   * The pairs (bodies and walls) that overlap by more than ratio times the
+   * smaller smallest semi-axis of the pair, from the signed distance (a body
+   * behind a wall overlaps it by its whole depth). Pairs whose bounding
+   * spheres are apart, or proved apart by the overlap test, are skipped.
+   * Nothing is recorded (the histories and statistics are unchanged).
+   */
+  std::vector<Overlap> overlaps(const std::vector<CollisionBody>& bodies, Scalar ratio);
+
  private:
   /// The static load (N) pressing bodies i and j (j < 0: a wall) together
   /// along n (from i to j), from their external forces and their other

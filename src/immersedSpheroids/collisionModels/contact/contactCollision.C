@@ -296,12 +296,74 @@ Foam::label Foam::collisionModels::contact::subSteps
     }
     catch (const std::exception& err)
     {
+        // the body that sets the sub-step: the fastest (speed plus
+        // rotation at its largest semi-axis)
+        label fastest = 0;
+        scalar speed = -1;
+        for (std::size_t i = 0; i < collisionBodies.size(); ++i)
+        {
+            const collision::CollisionBody& b = collisionBodies[i];
+            const scalar s =
+                b.velocity.norm() + b.angularVelocity.norm()*b.shape.maxSemiAxis();
+            if (b.movable && s > speed)
+            {
+                speed = s;
+                fastest = label(i);
+            }
+        }
         FatalErrorInFunction
             << "Collision sub-steps of the step " << dt << " s: " << err.what()
-            << nl << "    (raise maxSubSteps in the collision dictionary or"
-            << " reduce deltaT)" << nl << exit(FatalError);
+            << nl << "    The fastest body is '"
+            << bodies.name(fastest).c_str() << "' at "
+            << immersedSpheroids::toFoam(states[fastest].centre) << ", "
+            << mag(immersedSpheroids::toFoam(states[fastest].velocity))
+            << " m/s and " << mag(immersedSpheroids::toFoam(states[fastest].angularVelocity))
+            << " rad/s. If that speed is not physical, the run went wrong"
+            << " before this step (bodies thrown apart, an unstable body:"
+            << " see its time series); otherwise raise maxSubSteps ("
+            << model_->settings().maxSubSteps << ") in the collision"
+            << " dictionary or reduce deltaT" << nl << exit(FatalError);
     }
     return 1;
+}
+
+
+void Foam::collisionModels::contact::checkOverlaps
+(
+    const collision::BodySet& bodies,
+    const std::vector<collision::BodyState>& states,
+    const bool restarted
+)
+{
+    std::vector<collision::CollisionBody> collisionBodies;
+    collisionBodies.reserve(states.size());
+    for (std::size_t i = 0; i < states.size(); ++i)
+    {
+        collisionBodies.push_back(bodies.collisionBody(i, states[i]));
+    }
+    const scalar cap = model_->settings().maxOverlap;
+    const scalar allowed = restarted ? 2*cap : cap;
+    const std::vector<collision::CollisionModel::Overlap> found =
+        model_->overlaps(collisionBodies, allowed);
+    if (found.empty())
+    {
+        return;
+    }
+    const collision::CollisionModel::Overlap& o = found.front();
+    const std::string other =
+        o.second >= 0
+      ? "body '" + bodies.name(o.second) + "'"
+      : "wall '" + model_->walls()[-1 - o.second].name + "'";
+    FatalErrorInFunction
+        << "Body '" << bodies.name(o.first).c_str() << "' overlaps "
+        << other.c_str() << " at the"
+        << " start by " << o.ratio << " of the pair's smallest semi-axis"
+        << " (" << found.size() << " pair(s) in all overlap too much); the"
+        << " collision model allows " << allowed
+        << (restarted ? " on a restart (twice maxOverlap)" : " (maxOverlap)")
+        << " and would throw the bodies apart. Place the bodies apart and in"
+        << " front of every collision wall (a body behind a wall overlaps it"
+        << " by its depth)" << nl << exit(FatalError);
 }
 
 

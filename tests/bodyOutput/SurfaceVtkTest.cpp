@@ -3,8 +3,11 @@
 #include "TestUtil.hpp"
 #include "bodyOutput/SurfaceVtk.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -36,48 +39,108 @@ struct PolyData {
   std::vector<Vec> normals;
 };
 
+/// Reads a binary legacy-VTK file: text lines and blocks of big-endian 32-bit numbers.
+class BinaryVtkReader {
+ public:
+  explicit BinaryVtkReader(std::string bytes) : s_(std::move(bytes)) {}
+
+  /// The text up to the next newline (consumed); empty at the end of the data.
+  std::string line() {
+    const std::size_t end = s_.find('\n', pos_);
+    if (end == std::string::npos) {
+      ADD_FAILURE() << "missing newline after byte " << pos_;
+      pos_ = s_.size();
+      return {};
+    }
+    std::string l = s_.substr(pos_, end - pos_);
+    pos_ = end + 1;
+    return l;
+  }
+
+  /// A 4-byte big-endian value (float or int32); 0 past the end (and a failure)
+  template <class T>
+  T number() {
+    static_assert(sizeof(T) == 4, "4-byte values only");
+    if (pos_ + 4 > s_.size()) {
+      if (!truncated_) ADD_FAILURE() << "binary data truncated at byte " << pos_;
+      truncated_ = true;
+      return T{};
+    }
+    std::uint32_t bits = 0;
+    for (int i = 0; i < 4; ++i) bits = (bits << 8) | static_cast<unsigned char>(s_[pos_ + i]);
+    pos_ += 4;
+    T v;
+    std::memcpy(&v, &bits, 4);
+    return v;
+  }
+
+  bool atEnd() const { return pos_ == s_.size(); }
+  std::size_t position() const { return pos_; }
+
+ private:
+  std::string s_;
+  std::size_t pos_ = 0;
+  bool truncated_ = false;
+};
+
+/// The words of a line
+std::vector<std::string> words(const std::string& line) {
+  std::istringstream in(line);
+  std::vector<std::string> w;
+  for (std::string word; in >> word;) w.push_back(word);
+  return w;
+}
+
+std::size_t count(const std::string& word) { return std::stoul(word); }
+
 PolyData parseVtk(const std::string& file) {
-  std::istringstream in(readFile(file));
+  BinaryVtkReader in(readFile(file));
   PolyData p;
-  std::string line;
-  for (int i = 0; i < 4 && std::getline(in, line); ++i) p.header.push_back(line);
-  std::string word, type;
-  std::size_t n = 0, size = 0;
-  in >> word >> n >> type;
-  EXPECT_EQ(word, "POINTS");
-  EXPECT_EQ(type, "double");
+  for (int i = 0; i < 4; ++i) p.header.push_back(in.line());
+  auto w = words(in.line());
+  EXPECT_EQ(w.size(), 3u);
+  w.resize(3);
+  EXPECT_EQ(w[0], "POINTS");
+  EXPECT_EQ(w[2], "float");
+  std::size_t n = count(w[1]);
   p.points.resize(n);
-  for (Vec& v : p.points) in >> v[0] >> v[1] >> v[2];
-  in >> word >> n >> size;
-  EXPECT_EQ(word, "POLYGONS");
-  EXPECT_EQ(size, 4 * n);
+  for (Vec& v : p.points) {
+    for (double& x : v) x = in.number<float>();
+  }
+  EXPECT_EQ(in.line(), "") << "the points end with a newline";
+  w = words(in.line());
+  w.resize(3);
+  EXPECT_EQ(w[0], "POLYGONS");
+  n = count(w[1]);
+  EXPECT_EQ(count(w[2]), 4 * n);
   p.triangles.resize(n);
   for (auto& t : p.triangles) {
-    int count = 0;
-    in >> count >> t[0] >> t[1] >> t[2];
-    EXPECT_EQ(count, 3);
+    EXPECT_EQ(in.number<std::int32_t>(), 3);
+    for (std::size_t& i : t) i = static_cast<std::size_t>(in.number<std::int32_t>());
   }
-  in >> word >> n;
-  EXPECT_EQ(word, "CELL_DATA");
+  EXPECT_EQ(in.line(), "") << "the polygons end with a newline";
+  w = words(in.line());
+  w.resize(2);
+  EXPECT_EQ(w[0], "CELL_DATA");
+  n = count(w[1]);
   EXPECT_EQ(n, p.triangles.size());
-  std::string name, lookup, table;
-  int components = 0;
-  in >> word >> name >> type >> components >> lookup >> table;
-  EXPECT_EQ(word + " " + name + " " + type, "SCALARS body int");
-  EXPECT_EQ(components, 1);
-  EXPECT_EQ(lookup + " " + table, "LOOKUP_TABLE default");
+  EXPECT_EQ(in.line(), "SCALARS body int 1");
+  EXPECT_EQ(in.line(), "LOOKUP_TABLE default");
   p.body.resize(n);
-  for (int& b : p.body) in >> b;
-  in >> word >> n;
-  EXPECT_EQ(word, "POINT_DATA");
+  for (int& b : p.body) b = in.number<std::int32_t>();
+  EXPECT_EQ(in.line(), "") << "the cell data end with a newline";
+  w = words(in.line());
+  w.resize(2);
+  EXPECT_EQ(w[0], "POINT_DATA");
+  n = count(w[1]);
   EXPECT_EQ(n, p.points.size());
-  in >> word >> name >> type;
-  EXPECT_EQ(word + " " + name + " " + type, "NORMALS Normals double");
+  EXPECT_EQ(in.line(), "NORMALS Normals float");
   p.normals.resize(n);
-  for (Vec& v : p.normals) in >> v[0] >> v[1] >> v[2];
-  EXPECT_FALSE(in.fail()) << "truncated or malformed file";
-  in >> word;
-  EXPECT_TRUE(in.eof()) << "unexpected text at the end: " << word;
+  for (Vec& v : p.normals) {
+    for (double& x : v) x = in.number<float>();
+  }
+  EXPECT_EQ(in.line(), "") << "the normals end with a newline";
+  EXPECT_TRUE(in.atEnd()) << "unexpected data after byte " << in.position();
   return p;
 }
 
@@ -113,7 +176,7 @@ void checkSurfaces(const std::string& file, const std::vector<BodyShape>& bodies
   const PolyData p = parseVtk(file);
   ASSERT_EQ(p.header.size(), 4u);
   EXPECT_EQ(p.header[0], "# vtk DataFile Version 3.0");
-  EXPECT_EQ(p.header[2], "ASCII");
+  EXPECT_EQ(p.header[2], "BINARY");
   EXPECT_EQ(p.header[3], "DATASET POLYDATA");
 
   const std::size_t pointsPerBody = 10 * (std::size_t(1) << (2 * s)) + 2;
@@ -123,7 +186,13 @@ void checkSurfaces(const std::string& file, const std::vector<BodyShape>& bodies
   ASSERT_EQ(p.points.size(), pointsPerBody * bodies.size());
   ASSERT_EQ(p.triangles.size(), trianglesPerBody * bodies.size());
 
-  double worstSurface = 0, worstNormal = 0;
+  // Points and normals are stored as float (rounded to nearest, relative error <= 2^-24 a
+  // component): each point is on its ellipsoid, and its normal along the ellipsoid's gradient,
+  // to within the error that rounding allows. With d the point's error (|d| <= sqrt(3) 2^-24
+  // max|x_k|): |f - 1| <= 6 |d| / a_min, and the gradient turns by at most
+  // |d| a_max / a_min^2 (1 - cos of that, plus the normal's own rounding).
+  const double unit = std::ldexp(1.0, -24);
+  double worstSurface = 0, worstNormal = 0;  // as fractions of the allowed error
   for (std::size_t i = 0; i < p.points.size(); ++i) {
     const BodyShape& body = bodies[i / pointsPerBody];
     const auto r = rotationOf(body.orientation);
@@ -135,7 +204,12 @@ void checkSurfaces(const std::string& file, const std::vector<BodyShape>& bodies
     for (int k = 0; k < 3; ++k) {
       f += local[k] * local[k] / (body.semiAxes[k] * body.semiAxes[k]);
     }
-    worstSurface = std::max(worstSurface, std::abs(f - 1));
+    const double aMin = std::min({body.semiAxes[0], body.semiAxes[1], body.semiAxes[2]});
+    const double aMax = std::max({body.semiAxes[0], body.semiAxes[1], body.semiAxes[2]});
+    const double xMax =
+        std::max({std::abs(p.points[i][0]), std::abs(p.points[i][1]), std::abs(p.points[i][2])});
+    const double pointError = std::sqrt(3.0) * unit * xMax;
+    worstSurface = std::max(worstSurface, std::abs(f - 1) / (6 * pointError / aMin + 1e-12));
     for (int k = 0; k < 3; ++k) {
       gradient[k] = 0;
       for (int j = 0; j < 3; ++j) {
@@ -143,12 +217,14 @@ void checkSurfaces(const std::string& file, const std::vector<BodyShape>& bodies
       }
     }
     const Vec& n = p.normals[i];
-    EXPECT_NEAR(dot(n, n), 1, 1e-14) << "point " << i;
+    EXPECT_NEAR(dot(n, n), 1, 4 * unit) << "point " << i;
     const double g = std::sqrt(dot(gradient, gradient));
-    worstNormal = std::max(worstNormal, 1 - dot(n, gradient) / g);  // 0 when parallel, outward
+    const double turn = pointError * aMax / (aMin * aMin);
+    // 0 when parallel, outward
+    worstNormal = std::max(worstNormal, (1 - dot(n, gradient) / g) / (4 * unit + turn * turn));
   }
-  EXPECT_LE(worstSurface, 1e-12);
-  EXPECT_LE(worstNormal, 1e-13);
+  EXPECT_LE(worstSurface, 1);
+  EXPECT_LE(worstNormal, 1);
 
   // triangles: the body's own points, outward, and each body's mesh closed (every edge used
   // twice, once in each direction) with V - E + F = 2
@@ -227,6 +303,17 @@ TEST_F(SurfaceVtkTest, InvalidArguments) {
   bodies = twoBodies();
   bodies[0].centre[1] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(writeSurfacesVtk(file, bodies, 0), std::invalid_argument);
+  // more bodies than the 32-bit counts of the file hold (4 * 20 * 4^8 * 410 > 2^31 - 1)
+  bodies.assign(410, twoBodies()[0]);
+  try {
+    writeSurfacesVtk(file, bodies, 8);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("410 bodies exceed the 32-bit counts of the file; at "
+                                         "most 409 with 8 subdivisions"),
+              std::string::npos)
+        << e.what();
+  }
   EXPECT_FALSE(fs::exists(file));
   // a path that cannot be written: error naming it
   fs::create_directories(path("dir.vtk"));

@@ -26,6 +26,14 @@ void createParentDirectories(const std::string& path, const std::string& who) {
 }
 
 void writeFileAtomically(const std::string& path, const std::string& text, const std::string& who) {
+  writeFileAtomically(
+      path,
+      [&](std::ostream& out) { out.write(text.data(), static_cast<std::streamsize>(text.size())); },
+      who);
+}
+
+void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& fill,
+                         const std::string& who) {
   createParentDirectories(path, who);
   const std::string tmp = path + ".tmp";
   {
@@ -34,7 +42,14 @@ void writeFileAtomically(const std::string& path, const std::string& text, const
       throw std::runtime_error(who + ": cannot open '" + tmp + "' for writing: " +
                                std::strerror(errno));
     }
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    try {
+      fill(out);
+    } catch (...) {
+      out.close();
+      std::error_code ec;
+      fs::remove(tmp, ec);
+      throw;
+    }
     out.close();
     if (!out) {
       std::error_code ec;

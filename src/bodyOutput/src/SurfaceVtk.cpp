@@ -6,9 +6,11 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <system_error>
@@ -122,17 +124,38 @@ void validate(const BodyShape& body, std::size_t index, const std::string& who) 
   }
 }
 
-void appendNumber(std::string& out, double v) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, r.ptr);
-}
+/// Writes text and 4-byte numbers to a stream through a buffer of about 1 MB: the numbers big
+/// endian (legacy VTK binary is big-endian whatever the machine). Neither appending millions of
+/// 4-byte pieces to one string nor holding the whole file in memory (first-touch page faults of
+/// ~100 MB) is as cheap.
+class BigEndianWriter {
+ public:
+  explicit BigEndianWriter(std::ostream& out) : out_(out) { buffer_.reserve(kSize + 64); }
 
-void appendInteger(std::string& out, std::size_t v) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, r.ptr);
-}
+  template <class T>
+  void put(T v) {
+    static_assert(sizeof(T) == 4, "4-byte values only");
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &v, 4);
+    const char bytes[4] = {static_cast<char>(bits >> 24), static_cast<char>(bits >> 16),
+                           static_cast<char>(bits >> 8), static_cast<char>(bits)};
+    buffer_.append(bytes, 4);
+    if (buffer_.size() >= kSize) flush();
+  }
+  void text(const std::string& s) {
+    buffer_ += s;
+    if (buffer_.size() >= kSize) flush();
+  }
+  void flush() {
+    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    buffer_.clear();
+  }
+
+ private:
+  static constexpr std::size_t kSize = std::size_t(1) << 20;
+  std::ostream& out_;
+  std::string buffer_;
+};
 
 void checkSubdivisions(int subdivisions, const std::string& who) {
   if (subdivisions < 0 || subdivisions > kMaxSurfaceSubdivisions) {
@@ -426,79 +449,71 @@ void writeSurfacesVtk(const std::string& path, const std::vector<BodyShape>& bod
   const std::string who = "writeSurfacesVtk: '" + path + "'";
   checkSubdivisions(subdivisions, who);
   for (std::size_t i = 0; i < bodies.size(); ++i) validate(bodies[i], i, who);
+  // point indices, counts and the body index are 32-bit signed in the file
+  const std::size_t pointsPerBody = surfacePointCount(subdivisions);
+  const std::size_t maxBodies = std::size_t(std::numeric_limits<std::int32_t>::max()) /
+                                (4 * surfaceTriangleCount(subdivisions));
+  if (bodies.size() > maxBodies) {
+    throw std::invalid_argument(who + ": " + std::to_string(bodies.size()) +
+                                " bodies exceed the 32-bit counts of the file; at most " +
+                                std::to_string(maxBodies) + " with " +
+                                std::to_string(subdivisions) + " subdivisions");
+  }
 
   std::vector<Vec3> sphere;
   std::vector<Triangle> triangles;
   unitSphere(subdivisions, sphere, triangles);
-  const std::size_t np = sphere.size() * bodies.size();
+  const std::size_t np = pointsPerBody * bodies.size();
   const std::size_t nt = triangles.size() * bodies.size();
 
-  std::string out;
-  out.reserve(np * 150 + nt * 40 + 512);
-  out += "# vtk DataFile Version 3.0\n";
-  out += "spheroidFoam body surfaces\n";
-  out += "ASCII\n";
-  out += "DATASET POLYDATA\n";
-  out += "POINTS ";
-  appendInteger(out, np);
-  out += " double\n";
-  std::vector<Vec3> normals;
-  normals.reserve(np);
-  for (const BodyShape& body : bodies) {
-    const std::array<double, 9> r = rotation(body.orientation);
-    const Vec3& s = body.semiAxes;
-    const Vec3& c = body.centre;
-    for (const Vec3& u : sphere) {
-      const Vec3 local{s[0] * u[0], s[1] * u[1], s[2] * u[2]};
-      const Vec3 g{u[0] / s[0], u[1] / s[1], u[2] / s[2]};  // body-frame gradient direction
+  // points, then normals: R(q) diag(a, b, c) u and R(q) diag(1/a, 1/b, 1/c) u normalised
+  auto eachPoint = [&](auto onPoint) {
+    for (const BodyShape& body : bodies) {
+      const std::array<double, 9> r = rotation(body.orientation);
+      const Vec3& s = body.semiAxes;
+      for (const Vec3& u : sphere) {
+        onPoint(body, r, Vec3{s[0] * u[0], s[1] * u[1], s[2] * u[2]},
+                Vec3{u[0] / s[0], u[1] / s[1], u[2] / s[2]});
+      }
+    }
+  };
+  auto write = [&](std::ostream& stream) {
+    BigEndianWriter out(stream);
+    out.text("# vtk DataFile Version 3.0\nspheroidFoam body surfaces\nBINARY\n"
+             "DATASET POLYDATA\nPOINTS " + std::to_string(np) + " float\n");
+    eachPoint([&](const BodyShape& body, const std::array<double, 9>& r, const Vec3& local,
+                  const Vec3&) {
       for (int k = 0; k < 3; ++k) {
-        if (k) out += ' ';
-        appendNumber(out, c[k] + (r[3 * k] * local[0] + r[3 * k + 1] * local[1] +
-                                  r[3 * k + 2] * local[2]));
+        out.put(static_cast<float>(body.centre[k] + (r[3 * k] * local[0] +
+                                                     r[3 * k + 1] * local[1] +
+                                                     r[3 * k + 2] * local[2])));
       }
-      out += '\n';
-      normals.push_back(normalised({r[0] * g[0] + r[1] * g[1] + r[2] * g[2],
-                                    r[3] * g[0] + r[4] * g[1] + r[5] * g[2],
-                                    r[6] * g[0] + r[7] * g[1] + r[8] * g[2]}));
-    }
-  }
-  out += "POLYGONS ";
-  appendInteger(out, nt);
-  out += ' ';
-  appendInteger(out, 4 * nt);
-  out += '\n';
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
-    const std::size_t offset = b * sphere.size();
-    for (const Triangle& t : triangles) {
-      out += '3';
-      for (std::uint32_t i : t) {
-        out += ' ';
-        appendInteger(out, offset + i);
+    });
+    // each binary block ends with a newline, as VTK's own legacy writer does
+    out.text("\nPOLYGONS " + std::to_string(nt) + " " + std::to_string(4 * nt) + "\n");
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      const std::size_t offset = b * pointsPerBody;
+      for (const Triangle& t : triangles) {
+        out.put(std::int32_t{3});
+        for (std::uint32_t i : t) out.put(static_cast<std::int32_t>(offset + i));
       }
-      out += '\n';
     }
-  }
-  out += "CELL_DATA ";
-  appendInteger(out, nt);
-  out += "\nSCALARS body int 1\nLOOKUP_TABLE default\n";
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
-    for (std::size_t t = 0; t < triangles.size(); ++t) {
-      appendInteger(out, b);
-      out += '\n';
+    out.text("\nCELL_DATA " + std::to_string(nt) +
+             "\nSCALARS body int 1\nLOOKUP_TABLE default\n");
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      for (std::size_t t = 0; t < triangles.size(); ++t) out.put(static_cast<std::int32_t>(b));
     }
-  }
-  out += "POINT_DATA ";
-  appendInteger(out, np);
-  out += "\nNORMALS Normals double\n";
-  for (const Vec3& n : normals) {
-    appendNumber(out, n[0]);
-    out += ' ';
-    appendNumber(out, n[1]);
-    out += ' ';
-    appendNumber(out, n[2]);
-    out += '\n';
-  }
-  detail::writeFileAtomically(path, out, "writeSurfacesVtk");
+    out.text("\nPOINT_DATA " + std::to_string(np) + "\nNORMALS Normals float\n");
+    eachPoint([&](const BodyShape&, const std::array<double, 9>& r, const Vec3&, const Vec3& g) {
+      const Vec3 n = normalised({r[0] * g[0] + r[1] * g[1] + r[2] * g[2],
+                                 r[3] * g[0] + r[4] * g[1] + r[5] * g[2],
+                                 r[6] * g[0] + r[7] * g[1] + r[8] * g[2]});
+      for (double nk : n) out.put(static_cast<float>(nk));
+    });
+    out.text("\n");
+    out.flush();
+  };
+  detail::writeFileAtomically(path, write, "writeSurfacesVtk");
 }
 
 void writeVtkSeries(const std::string& seriesPath,

@@ -47,7 +47,11 @@ std::array<double, 4> toArray(const quaternion& q)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::immersedBodiesOutput::writeSurfaces(const scalar t) const
+void Foam::immersedBodiesOutput::writeSurfaces
+(
+    const scalar t,
+    const word& timeName
+) const
 {
     if (!series_)
     {
@@ -65,7 +69,7 @@ void Foam::immersedBodiesOutput::writeSurfaces(const scalar t) const
         shapes.push_back(s);
     }
 
-    const word name("surfaces_" + bodies_.mesh().time().timeName() + ".vtk");
+    const word name("surfaces_" + timeName + ".vtk");
     const fileName surfacesDir(dir_/"surfaces");
     try
     {
@@ -179,7 +183,11 @@ void Foam::immersedBodiesOutput::start(const scalar t0)
                 << "Cannot read the series of surfaces " << file << ": "
                 << err.what() << nl << exit(FatalError);
         }
-        writeSurfaces(t0);
+        // start() runs within the first step, when the run's time is already
+        // t0 + deltaT: the file is named after t0 itself, as the time folder
+        // of t0 is (a write at t0 + deltaT then gets a file of its own)
+        const Time& time = bodies_.mesh().time();
+        writeSurfaces(t0, Time::timeName(time.timeToUserTime(t0)));
     }
 }
 
@@ -225,7 +233,7 @@ void Foam::immersedBodiesOutput::write() const
     const Time& time = bodies_.mesh().time();
     if (Pstream::master() && series_)
     {
-        writeSurfaces(time.value());
+        writeSurfaces(time.value(), time.timeName());
     }
     if (solidFraction_)
     {

@@ -1,11 +1,12 @@
 /**
  * @file SurfaceVtk.hpp
- * @brief Body surfaces for ParaView: legacy-VTK polydata of triangulated ellipsoids, and
+ * @brief Body surfaces for ParaView: binary legacy-VTK polydata of triangulated ellipsoids, and
  *        ParaView's ".series" files that give each surface file its time.
  *
  * Both functions write to a temporary file (name + ".tmp") and rename it, so a reader (ParaView
- * watching a running case) sees either the old or the new file, never a partial one. Numbers are
- * written with the shortest text that reads back to the same double (locale-independent).
+ * watching a running case) sees either the old or the new file, never a partial one. Times in
+ * the series are written with the shortest text that reads back to the same double
+ * (locale-independent).
  */
 #ifndef BODYOUTPUT_SURFACEVTK_HPP
 #define BODYOUTPUT_SURFACEVTK_HPP
@@ -32,16 +33,22 @@ constexpr int kMaxSurfaceSubdivisions = 8;
 std::size_t surfacePointCount(int subdivisions);
 std::size_t surfaceTriangleCount(int subdivisions);
 
-/// Legacy-VTK polydata (ASCII, "# vtk DataFile Version 3.0") of the bodies' surfaces: each
+/// Legacy-VTK polydata in binary ("# vtk DataFile Version 3.0", "BINARY": big-endian 32-bit
+/// floats and ints, which ParaView and every VTK reader accept) of the bodies' surfaces: each
 /// ellipsoid triangulated from a subdivided icosahedron (subdivisions >= 0: 20 * 4^subdivisions
 /// triangles, 10 * 4^subdivisions + 2 points, shared within a body), mapped to
 /// x = centre + R(q) diag(a, b, c) u for the unit vectors u of the sphere's mesh. Triangles are
 /// oriented outwards (counter-clockwise seen from outside). Body i's points and triangles follow
 /// those of bodies 0..i-1. Cell data: "body" (int, the body's index); point data: "Normals"
 /// (unit outward normals of the exact ellipsoid, R(q) diag(1/a, 1/b, 1/c) u normalised).
+/// Points and normals are computed in double and stored as float: the surfaces are for viewing
+/// (the exact state is in the time series), and float32 (relative precision 6e-8) keeps the
+/// file at 24 bytes a point and 20 a triangle; a body far from the origin compared to its size
+/// (|centre| / semi-axis above about 1e4) shows the rounding as a faceted surface.
 /// Creates parent folders. An empty list writes a valid file with no points.
 /// @throws std::invalid_argument for subdivisions outside [0, kMaxSurfaceSubdivisions], a
-///         semi-axis not finite and > 0, a centre not finite, a quaternion not finite or zero
+///         semi-axis not finite and > 0, a centre not finite, a quaternion not finite or zero,
+///         or more bodies than the file's 32-bit counts hold (4 * triangles <= 2^31 - 1)
 /// @throws std::runtime_error naming the file if it cannot be written
 void writeSurfacesVtk(const std::string& path, const std::vector<BodyShape>& bodies,
                       int subdivisions);

@@ -44,73 +44,6 @@ using Triangle = std::array<std::uint32_t, 3>;
 
 // ---- the ASCII legacy-VTK writer (same surfaces, numbers as shortest round-trip text)
 
-Vec3 normalised(const Vec3& v) {
-  const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  return {v[0] / n, v[1] / n, v[2] / n};
-}
-
-/// Unit sphere: an icosahedron subdivided `subdivisions` times (each triangle into four, the new
-/// points pushed onto the sphere), points shared, triangles counter-clockwise seen from outside.
-void unitSphere(int subdivisions, std::vector<Vec3>& points, std::vector<Triangle>& triangles) {
-  const double p = (1 + std::sqrt(5.0)) / 2;
-  points = {{-1, p, 0}, {1, p, 0}, {-1, -p, 0}, {1, -p, 0}, {0, -1, p}, {0, 1, p},
-            {0, -1, -p}, {0, 1, -p}, {p, 0, -1}, {p, 0, 1}, {-p, 0, -1}, {-p, 0, 1}};
-  for (Vec3& v : points) v = normalised(v);
-  triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-               {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-               {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-               {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-  // orient outwards whatever the table says: (p1 - p0) x (p2 - p0) along the centroid
-  for (Triangle& t : triangles) {
-    const Vec3& a = points[t[0]];
-    const Vec3& b = points[t[1]];
-    const Vec3& c = points[t[2]];
-    const Vec3 u{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-    const Vec3 v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    const Vec3 n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-    if (n[0] * (a[0] + b[0] + c[0]) + n[1] * (a[1] + b[1] + c[1]) + n[2] * (a[2] + b[2] + c[2]) <
-        0) {
-      std::swap(t[1], t[2]);
-    }
-  }
-  for (int s = 0; s < subdivisions; ++s) {
-    std::unordered_map<std::uint64_t, std::uint32_t> midpoints;
-    midpoints.reserve(triangles.size() * 2);
-    auto midpoint = [&](std::uint32_t i, std::uint32_t j) {
-      const std::uint64_t key = (std::uint64_t(std::min(i, j)) << 32) | std::max(i, j);
-      const auto found = midpoints.find(key);
-      if (found != midpoints.end()) return found->second;
-      const Vec3& a = points[i];
-      const Vec3& b = points[j];
-      points.push_back(normalised({a[0] + b[0], a[1] + b[1], a[2] + b[2]}));
-      const auto index = static_cast<std::uint32_t>(points.size() - 1);
-      midpoints.emplace(key, index);
-      return index;
-    };
-    std::vector<Triangle> finer;
-    finer.reserve(triangles.size() * 4);
-    for (const Triangle& t : triangles) {
-      const std::uint32_t ab = midpoint(t[0], t[1]);
-      const std::uint32_t bc = midpoint(t[1], t[2]);
-      const std::uint32_t ca = midpoint(t[2], t[0]);
-      finer.push_back({t[0], ab, ca});
-      finer.push_back({t[1], bc, ab});
-      finer.push_back({t[2], ca, bc});
-      finer.push_back({ab, bc, ca});
-    }
-    triangles.swap(finer);
-  }
-}
-
-/// rotation matrix of the normalised quaternion (w, x, y, z), row-major
-std::array<double, 9> rotation(const std::array<double, 4>& q) {
-  const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-  const double w = q[0] / n, x = q[1] / n, y = q[2] / n, z = q[3] / n;
-  return {1 - 2 * (y * y + z * z), 2 * (x * y - w * z),     2 * (x * z + w * y),
-          2 * (x * y + w * z),     1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
-          2 * (x * z - w * y),     2 * (y * z + w * x),     1 - 2 * (x * x + y * y)};
-}
-
 void appendNumber(std::string& out, double v) {
   char buf[64];
   const auto r = std::to_chars(buf, buf + sizeof buf, v);
@@ -137,9 +70,9 @@ void writeFileAtomically(const std::string& path, const std::string& text) {
 
 void writeSurfacesAscii(const std::string& path, const std::vector<BodyShape>& bodies,
                        int subdivisions) {
-  std::vector<Vec3> sphere;
-  std::vector<Triangle> triangles;
-  unitSphere(subdivisions, sphere, triangles);
+  const bodyoutput::UnitSphereMesh mesh = bodyoutput::unitSphereMesh(subdivisions);
+  const std::vector<Vec3>& sphere = mesh.points;
+  const std::vector<Triangle>& triangles = mesh.triangles;
   const std::size_t np = sphere.size() * bodies.size();
   const std::size_t nt = triangles.size() * bodies.size();
 
@@ -155,21 +88,15 @@ void writeSurfacesAscii(const std::string& path, const std::vector<BodyShape>& b
   std::vector<Vec3> normals;
   normals.reserve(np);
   for (const BodyShape& body : bodies) {
-    const std::array<double, 9> r = rotation(body.orientation);
-    const Vec3& s = body.semiAxes;
-    const Vec3& c = body.centre;
+    const std::array<double, 9> r = bodyoutput::rotationMatrix(body.orientation);
     for (const Vec3& u : sphere) {
-      const Vec3 local{s[0] * u[0], s[1] * u[1], s[2] * u[2]};
-      const Vec3 g{u[0] / s[0], u[1] / s[1], u[2] / s[2]};  // body-frame gradient direction
+      const Vec3 x = bodyoutput::surfacePoint(body, r, u);
       for (int k = 0; k < 3; ++k) {
         if (k) out += ' ';
-        appendNumber(out, c[k] + (r[3 * k] * local[0] + r[3 * k + 1] * local[1] +
-                                  r[3 * k + 2] * local[2]));
+        appendNumber(out, x[k]);
       }
       out += '\n';
-      normals.push_back(normalised({r[0] * g[0] + r[1] * g[1] + r[2] * g[2],
-                                    r[3] * g[0] + r[4] * g[1] + r[5] * g[2],
-                                    r[6] * g[0] + r[7] * g[1] + r[8] * g[2]}));
+      normals.push_back(bodyoutput::surfaceNormal(body, r, u));
     }
   }
   out += "POLYGONS ";

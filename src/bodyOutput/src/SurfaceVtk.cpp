@@ -89,14 +89,6 @@ void unitSphere(int subdivisions, std::vector<Vec3>& points, std::vector<Triangl
   }
 }
 
-/// rotation matrix of the normalised quaternion (w, x, y, z), row-major
-std::array<double, 9> rotation(const std::array<double, 4>& q) {
-  const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-  const double w = q[0] / n, x = q[1] / n, y = q[2] / n, z = q[3] / n;
-  return {1 - 2 * (y * y + z * z), 2 * (x * y - w * z),     2 * (x * z + w * y),
-          2 * (x * y + w * z),     1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
-          2 * (x * z - w * y),     2 * (y * z + w * x),     1 - 2 * (x * x + y * y)};
-}
 
 void validate(const BodyShape& body, std::size_t index, const std::string& who) {
   const std::string name = who + ": body " + std::to_string(index);
@@ -434,6 +426,39 @@ double keepThreshold(double t) {
 
 }  // namespace
 
+UnitSphereMesh unitSphereMesh(int subdivisions) {
+  UnitSphereMesh mesh;
+  unitSphere(subdivisions, mesh.points, mesh.triangles);
+  return mesh;
+}
+
+std::array<double, 9> rotationMatrix(const std::array<double, 4>& q) {
+  const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  const double w = q[0] / n, x = q[1] / n, y = q[2] / n, z = q[3] / n;
+  return {1 - 2 * (y * y + z * z), 2 * (x * y - w * z),     2 * (x * z + w * y),
+          2 * (x * y + w * z),     1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
+          2 * (x * z - w * y),     2 * (y * z + w * x),     1 - 2 * (x * x + y * y)};
+}
+
+std::array<double, 3> surfacePoint(const BodyShape& body, const std::array<double, 9>& r,
+                                   const std::array<double, 3>& u) {
+  const Vec3& s = body.semiAxes;
+  const Vec3 local{s[0] * u[0], s[1] * u[1], s[2] * u[2]};
+  Vec3 x;
+  for (int k = 0; k < 3; ++k) {
+    x[k] = body.centre[k] + (r[3 * k] * local[0] + r[3 * k + 1] * local[1] + r[3 * k + 2] * local[2]);
+  }
+  return x;
+}
+
+std::array<double, 3> surfaceNormal(const BodyShape& body, const std::array<double, 9>& r,
+                                    const std::array<double, 3>& u) {
+  const Vec3& s = body.semiAxes;
+  const Vec3 g{u[0] / s[0], u[1] / s[1], u[2] / s[2]};  // body-frame gradient direction
+  return normalised({r[0] * g[0] + r[1] * g[1] + r[2] * g[2], r[3] * g[0] + r[4] * g[1] + r[5] * g[2],
+                     r[6] * g[0] + r[7] * g[1] + r[8] * g[2]});
+}
+
 std::size_t surfacePointCount(int subdivisions) {
   checkSubdivisions(subdivisions, "surfacePointCount");
   return 10 * (std::size_t(1) << (2 * subdivisions)) + 2;
@@ -460,35 +485,21 @@ void writeSurfacesVtk(const std::string& path, const std::vector<BodyShape>& bod
                                 std::to_string(subdivisions) + " subdivisions");
   }
 
-  std::vector<Vec3> sphere;
-  std::vector<Triangle> triangles;
-  unitSphere(subdivisions, sphere, triangles);
+  const UnitSphereMesh sphere = unitSphereMesh(subdivisions);
+  const std::vector<Triangle>& triangles = sphere.triangles;
   const std::size_t np = pointsPerBody * bodies.size();
   const std::size_t nt = triangles.size() * bodies.size();
 
-  // points, then normals: R(q) diag(a, b, c) u and R(q) diag(1/a, 1/b, 1/c) u normalised
-  auto eachPoint = [&](auto onPoint) {
-    for (const BodyShape& body : bodies) {
-      const std::array<double, 9> r = rotation(body.orientation);
-      const Vec3& s = body.semiAxes;
-      for (const Vec3& u : sphere) {
-        onPoint(body, r, Vec3{s[0] * u[0], s[1] * u[1], s[2] * u[2]},
-                Vec3{u[0] / s[0], u[1] / s[1], u[2] / s[2]});
-      }
-    }
-  };
   auto write = [&](std::ostream& stream) {
     BigEndianWriter out(stream);
     out.text("# vtk DataFile Version 3.0\nspheroidFoam body surfaces\nBINARY\n"
              "DATASET POLYDATA\nPOINTS " + std::to_string(np) + " float\n");
-    eachPoint([&](const BodyShape& body, const std::array<double, 9>& r, const Vec3& local,
-                  const Vec3&) {
-      for (int k = 0; k < 3; ++k) {
-        out.put(static_cast<float>(body.centre[k] + (r[3 * k] * local[0] +
-                                                     r[3 * k + 1] * local[1] +
-                                                     r[3 * k + 2] * local[2])));
+    for (const BodyShape& body : bodies) {
+      const std::array<double, 9> r = rotationMatrix(body.orientation);
+      for (const Vec3& u : sphere.points) {
+        for (double xk : surfacePoint(body, r, u)) out.put(static_cast<float>(xk));
       }
-    });
+    }
     // each binary block ends with a newline, as VTK's own legacy writer does
     out.text("\nPOLYGONS " + std::to_string(nt) + " " + std::to_string(4 * nt) + "\n");
     for (std::size_t b = 0; b < bodies.size(); ++b) {
@@ -504,12 +515,12 @@ void writeSurfacesVtk(const std::string& path, const std::vector<BodyShape>& bod
       for (std::size_t t = 0; t < triangles.size(); ++t) out.put(static_cast<std::int32_t>(b));
     }
     out.text("\nPOINT_DATA " + std::to_string(np) + "\nNORMALS Normals float\n");
-    eachPoint([&](const BodyShape&, const std::array<double, 9>& r, const Vec3&, const Vec3& g) {
-      const Vec3 n = normalised({r[0] * g[0] + r[1] * g[1] + r[2] * g[2],
-                                 r[3] * g[0] + r[4] * g[1] + r[5] * g[2],
-                                 r[6] * g[0] + r[7] * g[1] + r[8] * g[2]});
-      for (double nk : n) out.put(static_cast<float>(nk));
-    });
+    for (const BodyShape& body : bodies) {
+      const std::array<double, 9> r = rotationMatrix(body.orientation);
+      for (const Vec3& u : sphere.points) {
+        for (double nk : surfaceNormal(body, r, u)) out.put(static_cast<float>(nk));
+      }
+    }
     out.text("\n");
     out.flush();
   };

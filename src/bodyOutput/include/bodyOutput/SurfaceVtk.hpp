@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,6 +29,27 @@ struct BodyShape {
 
 /// Largest `subdivisions` accepted by writeSurfacesVtk (20 * 4^8 = 1.3 million triangles a body).
 constexpr int kMaxSurfaceSubdivisions = 8;
+
+/// The unit sphere of the surfaces: an icosahedron subdivided `subdivisions` times (each
+/// triangle into four, the new points pushed onto the sphere), points shared, triangles
+/// counter-clockwise seen from outside.
+struct UnitSphereMesh {
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+UnitSphereMesh unitSphereMesh(int subdivisions);
+
+/// The rotation matrix (row-major) of the quaternion (w, x, y, z), normalised first.
+std::array<double, 9> rotationMatrix(const std::array<double, 4>& q);
+
+/// The point of the body's surface for the unit-sphere point u: centre + R diag(a, b, c) u,
+/// R = rotationMatrix(body.orientation).
+std::array<double, 3> surfacePoint(const BodyShape& body, const std::array<double, 9>& R,
+                                   const std::array<double, 3>& u);
+
+/// The outward unit normal there: R diag(1/a, 1/b, 1/c) u normalised.
+std::array<double, 3> surfaceNormal(const BodyShape& body, const std::array<double, 9>& R,
+                                    const std::array<double, 3>& u);
 
 /// Points (10 * 4^s + 2) and triangles (20 * 4^s) of one body's surface with s subdivisions.
 std::size_t surfacePointCount(int subdivisions);

@@ -91,13 +91,14 @@ void immersedBodiesTests::testBadInput(const Time& runTime, const fvMesh& mesh)
         return "fluidDensity 1000;" + output + " bodies { b1 { " + body + " } }";
     };
 
-    // The writer and the construction work: a good file constructs
+    // Construct from text; passes if no error is raised
+    auto expectConstructs = [&](const std::string& text, const std::string& what)
     {
         bool ok = true;
         const bool throwing = FatalIOError.throwExceptions();
         try
         {
-            constructRaw(withBody(goodBody))();
+            constructRaw(text)();
         }
         catch (const Foam::error& err)
         {
@@ -105,8 +106,11 @@ void immersedBodiesTests::testBadInput(const Time& runTime, const fvMesh& mesh)
             Info<< err.message().c_str() << endl;
         }
         FatalIOError.throwExceptions(throwing);
-        check(ok, "bad input: the good reference file constructs");
-    }
+        check(ok, "bad input: " + what);
+    };
+
+    // The writer and the construction work: a good file constructs
+    expectConstructs(withBody(goodBody), "the good reference file constructs");
 
     expectFatalIOError
     (
@@ -295,22 +299,12 @@ void immersedBodiesTests::testBadInput(const Time& runTime, const fvMesh& mesh)
         {"'orientation'", "unit", "differs from 1 by more than 0.0001", fname},
         "orientation not a unit quaternion, the tolerance stated"
     );
-    {
-        // four significant digits are a unit quaternion
-        bool ok = true;
-        const bool throwing = FatalIOError.throwExceptions();
-        try
-        {
-            constructRaw(withBody("semiAxes (0.1 0.05 0.05); density 1100; centre (0.5 0.5 0.5); orientation (0.7071 0 0 0.7071); motion { type fixed; }"))();
-        }
-        catch (const Foam::error& err)
-        {
-            ok = false;
-            Info<< err.message().c_str() << endl;
-        }
-        FatalIOError.throwExceptions(throwing);
-        check(ok, "bad input: orientation (0.7071 0 0 0.7071) is accepted");
-    }
+    // four significant digits are a unit quaternion
+    expectConstructs
+    (
+        withBody("semiAxes (0.1 0.05 0.05); density 1100; centre (0.5 0.5 0.5); orientation (0.7071 0 0 0.7071); motion { type fixed; }"),
+        "orientation (0.7071 0 0 0.7071) is accepted"
+    );
     expectFatalIOError
     (
         construct("fluidDensity 1000;" + output + " bodies { b1 { " + goodBody + " } b1 { " + goodBody + " } }"),

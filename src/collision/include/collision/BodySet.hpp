@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace collision {
 
@@ -31,6 +32,14 @@ class BodySet {
 
   /// Body i at the state s as the collision model sees it.
   virtual CollisionBody collisionBody(std::size_t i, const BodyState& s) const = 0;
+
+  /// Every body at its state (one state per body).
+  std::vector<CollisionBody> collisionBodies(const std::vector<BodyState>& states) const {
+    std::vector<CollisionBody> bodies;
+    bodies.reserve(states.size());
+    for (std::size_t i = 0; i < states.size(); ++i) bodies.push_back(collisionBody(i, states[i]));
+    return bodies;
+  }
 
   /**
    * Advance s, a state of body i, from t over dt under the collision force

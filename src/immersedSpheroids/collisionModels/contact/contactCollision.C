@@ -284,12 +284,8 @@ Foam::label Foam::collisionModels::contact::subSteps
     const scalar dt
 )
 {
-    std::vector<collision::CollisionBody> collisionBodies;
-    collisionBodies.reserve(states.size());
-    for (std::size_t i = 0; i < states.size(); ++i)
-    {
-        collisionBodies.push_back(bodies.collisionBody(i, states[i]));
-    }
+    const std::vector<collision::CollisionBody> collisionBodies =
+        bodies.collisionBodies(states);
     try
     {
         return model_->subSteps(collisionBodies, dt, contactSteps_*dt);
@@ -335,12 +331,8 @@ void Foam::collisionModels::contact::checkOverlaps
     const bool restarted
 )
 {
-    std::vector<collision::CollisionBody> collisionBodies;
-    collisionBodies.reserve(states.size());
-    for (std::size_t i = 0; i < states.size(); ++i)
-    {
-        collisionBodies.push_back(bodies.collisionBody(i, states[i]));
-    }
+    const std::vector<collision::CollisionBody> collisionBodies =
+        bodies.collisionBodies(states);
     const scalar cap = model_->settings().maxOverlap;
     const scalar allowed = restarted ? 2*cap : cap;
     const std::vector<collision::CollisionModel::Overlap> found =

@@ -4,9 +4,12 @@
     /usr/bin/python3 validation/dryCollisions/plotDryCollisions.py [RESULTS_DIR]
 
 Reads RESULTS_DIR (default: validation/dryCollisions/results) and writes there
-restitution.png, spheroidWall.png, extremes.png and table.md.
+restitution.png, spheroidWall.png, extremes.png, table.md and metrics.json (the checks of
+checks.md: their number, how many failed, and the worst value of each).
 """
+import json
 import os
+import re
 import statistics
 import sys
 from collections import defaultdict
@@ -312,5 +315,30 @@ if gain:
 
 with open(os.path.join(RESULTS, "table.md"), "w") as f:
     f.write("\n".join(out) + "\n")
+
+
+def check_metrics(path):
+    """Flat metrics from checks.md (written by dryCollisions): checks, checks_failed and
+    worst_<check> for each check (its worst value over the cases it covers)."""
+    metrics = {"checks": 0, "checks_failed": 0}
+    with open(path) as f:
+        for line in f:
+            if not re.match(r"\| \d", line):
+                continue
+            cells = [c.strip().replace("\\|", "|")
+                     for c in line.replace("\\|", "\\!").strip().strip("|").split(" | ")]
+            cells = [c.replace("\\!", "|") for c in cells]
+            name, worst, failed = cells[0], cells[2], int(cells[5])
+            key = "worst_" + re.sub(r"[^a-z0-9]+", "_", name.lower()).strip("_")
+            metrics[key] = float(worst)
+            metrics["checks"] += 1
+            metrics["checks_failed"] += int(failed > 0)
+    return metrics
+
+
+with open(os.path.join(RESULTS, "metrics.json"), "w") as f:
+    json.dump(check_metrics(os.path.join(RESULTS, "checks.md")), f, indent=1, sort_keys=True)
+    f.write("\n")
 print("wrote", ", ".join(os.path.join(RESULTS, x) for x in
-                         ("restitution.png", "spheroidWall.png", "extremes.png", "table.md")))
+                         ("restitution.png", "spheroidWall.png", "extremes.png", "table.md",
+                          "metrics.json")))

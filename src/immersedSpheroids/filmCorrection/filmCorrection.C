@@ -147,7 +147,8 @@ Foam::scalar Foam::filmCorrection::viscosity() const
         entryError
         (
             transport, "nu",
-            "must be > 0 for the lubrication force and the film correction"
+            "must be > 0 for the surface-corrected forcing, the lubrication force"
+            " and the film correction"
         );
     }
     viscosity_ = fluidDensity_*nu.value();
@@ -162,8 +163,9 @@ void Foam::filmCorrection::checkViscosityUsed() const
         immersedSpheroids::entryError
         (
             properties_, "viscosity",
-            "is used only by a lubricated pair or wall model"
-            " (lubricatedSpringDashpot) or by filmStabilisation yes; remove it"
+            "is used only by forcing surfaceCorrected, a lubricated pair or"
+            " wall model (lubricatedSpringDashpot) or filmStabilisation yes;"
+            " remove it"
         );
     }
 }

@@ -44,7 +44,7 @@ constexpr label subStepsDefault = 1;
 constexpr collision::Range subStepsRange{1, 100000};
 
 //- The virtual-mass coefficient C_v of the stabilisation (0: off)
-constexpr scalar virtualMassDefault = 0.5;
+constexpr scalar virtualMassDefault = 1;
 constexpr collision::Range virtualMassRange{0, 10};
 
 //- The penalty time scale in the cells on a wall patch
@@ -297,7 +297,8 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         properties_,
         wordList
         ({
-            "fluidDensity", "U", "penaltyRatio", "wallCellPenalty", "subSteps",
+            "fluidDensity", "U", "forcing", "penaltyRatio", "wallCellPenalty",
+            "subSteps",
             "virtualMass", "bodies", "packing", "output", "collision",
             "filmStabilisation", "filmGap", "viscosity"
         })
@@ -322,11 +323,6 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         "the penalty time scale in the cells on a wall patch: soft, eta"
         " at least the fluid's own time scale there; stiff, eta everywhere"
     );
-    forcing_.reset
-    (
-        new penaltyForcing(mesh, wallCells == wallCellPenaltyType::soft)
-    );
-
     const label subSteps = readOptionalInRange<label>
     (
         properties_, "subSteps", subStepsDefault, subStepsRange,
@@ -343,6 +339,25 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     (
         properties_, mesh_, fluidDensity_,
         collisionModel::selectedType(properties_) != "none"
+    );
+
+    const penaltyForcing::method forcing = readOptionalEnum
+    (
+        properties_, "forcing", penaltyForcing::methodNames,
+        penaltyForcing::method::surfaceCorrected,
+        "the penalty method: surfaceCorrected (the wall at the surface,"
+        " second order, steady answers independent of dt) or cutCellFraction"
+        " (solid-fraction coefficient, first order, for comparison)"
+    );
+    forcing_.reset
+    (
+        new penaltyForcing
+        (
+            mesh, forcing, wallCells == wallCellPenaltyType::soft,
+            forcing == penaltyForcing::method::surfaceCorrected
+          ? film.viscosity()/fluidDensity_
+          : 0
+        )
     );
     integrator_.reset
     (
@@ -384,7 +399,9 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     );
 
     Info<< "immersedBodies: " << bodies_.size() << " bodies, rho_f "
-        << fluidDensity_ << ", eta = " << penaltyRatio_ << " deltaT, "
+        << fluidDensity_ << ", forcing "
+        << penaltyForcing::methodNames[forcing_->forcingMethod()]
+        << ", eta = " << penaltyRatio_ << " deltaT, "
         << subSteps << " sub-step(s) per step";
     if (virtualMass > 0)
     {
@@ -467,7 +484,8 @@ void Foam::immersedBodies::update(const volVectorField& U)
     updateCpu_ = (immersedSpheroids::processCpuTime() - cpu0);
     Info<< "immersedBodies: " << bodies_.size() << " bodies, "
         << returnReduce(forcing_->nCells(), sumOp<label>())
-        << " covered cells, CPU update " << updateCpu_
+        << " covered cells, " << returnReduce(forcing_->nTerms(), sumOp<label>())
+        << " penalty terms, CPU update " << updateCpu_
         << " s, penalty (last step) " << lastPenaltyCpu << " s" << endl;
 }
 

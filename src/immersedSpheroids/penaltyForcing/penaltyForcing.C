@@ -45,21 +45,40 @@ zeroField
 } // End anonymous namespace
 
 
+// * * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * //
+
+const Foam::Enum<Foam::penaltyForcing::method>
+Foam::penaltyForcing::methodNames
+({
+    { method::surfaceCorrected, "surfaceCorrected" },
+    { method::cutCellFraction, "cutCellFraction" },
+});
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::penaltyForcing::penaltyForcing
 (
     const fvMesh& mesh,
-    const bool softWallCells
+    const method forcing,
+    const bool softWallCells,
+    const scalar nu
 )
 :
     mesh_(mesh),
+    method_(forcing),
     softWallCells_(softWallCells),
     wallCell_(mesh.nCells(), false),
     cellRadius_(immersedSpheroids::cellRadii(mesh)),
     cellsFound_(false),
     eta_(0),
+    bodyStart_(1, 0),
     cellSlot_(mesh.nCells(), -1),
+    inside_(mesh.nCells(), 0),
+    solid_(mesh.nCells(), false),
+    cellCoeff_(mesh.nCells(), 0),
+    cellAlpha_(mesh.nCells(), 0),
+    cellHeld_(mesh.nCells(), 0),
     cpu_(0)
 {
     forAll(mesh.boundaryMesh(), patchi)
@@ -73,34 +92,27 @@ Foam::penaltyForcing::penaltyForcing
             }
         }
     }
-}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::penaltyForcing::updateCells(PtrList<immersedBody>& bodies)
-{
-    for (immersedBody& body : bodies)
+    if (method_ == method::surfaceCorrected)
     {
-        if (!cellsFound_ || body.motion().moves())
-        {
-            body.updateCells(mesh_, cellRadius_);
-        }
+        links_.reset
+        (
+            new interfaceLinks
+            (
+                mesh, nu,
+                softWallCells_ ? wallCell_ : boolList(mesh.nCells(), false)
+            )
+        );
     }
-    cellsFound_ = true;
 }
 
 
-void Foam::penaltyForcing::assemble
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::penaltyForcing::collectCoveredCells
 (
-    const PtrList<immersedBody>& bodies,
-    const scalar eta,
-    const scalar dt,
-    const scalar ddtCoeff
+    const PtrList<immersedBody>& bodies
 )
 {
-    eta_ = eta;
-
     for (const label celli : cells_)
     {
         cellSlot_[celli] = -1;
@@ -142,28 +154,222 @@ void Foam::penaltyForcing::assemble
     alphaSum_.transfer(alphaSum);
     velocity_.transfer(alphaVelocity);
     velocity_ /= alphaSum_;
-    coeff_.setSize(cells_.size());
-    forAll(coeff_, s)
+}
+
+
+void Foam::penaltyForcing::addCutCellTerms
+(
+    const PtrList<immersedBody>& bodies,
+    const scalar eta,
+    const scalar dt,
+    const scalar ddtCoeff
+)
+{
+    const vectorField& C = mesh_.C().primitiveField();
+    forAll(bodies, bodyi)
     {
-        // k = alpha/(eta + (1 - alpha) dt/c): the implicit step gives
-        // U = alpha U_s + (1 - alpha) U* + O(eta/dt) in a cut cell, so the
-        // penalty carries the inertia of the fluid volume alpha V
-        //
-        // In a cell with a face on a wall the rigid-body velocity cannot be
-        // imposed when it has a component through the wall (a body touching
-        // or overlapping the wall in a collision): the wall face admits no
-        // flux, and a stiff penalty turns the conflict into a pressure of
-        // order rho_f U dx/eta, 1/penaltyRatio times the fluid's inertial
-        // scale, that pushes an approaching body off and sucks a receding
-        // one back (measured in docs/immersedBodies.md, wall cells). There
-        // eta is at least the fluid's own time scale dt/c (the strength of
-        // direct forcing): U_s is imposed over about a step
-        const scalar alpha = min(alphaSum_[s], scalar(1));
-        const scalar etaCell =
-            softWallCells_ && wallCell_[cells_[s]]
-          ? max(eta, dt/ddtCoeff)
-          : eta;
-        coeff_[s] = eta > 0 ? alpha/(etaCell + (1 - alpha)*dt/ddtCoeff) : 0;
+        const immersedBody& body = bodies[bodyi];
+        const DynamicList<label>& bodyCells = body.cells();
+        const DynamicList<scalar>& fractions = body.fractions();
+        const labelList& slots = bodySlots_[bodyi];
+        forAll(bodyCells, i)
+        {
+            // k = alpha/(eta + (1 - alpha) dt/c): the implicit step gives
+            // U = alpha U_s + (1 - alpha) U* + O(eta/dt) in a cut cell, so
+            // the penalty carries the inertia of the fluid volume alpha V
+            const label celli = bodyCells[i];
+            const label s = slots[i];
+            const scalar alpha = min(alphaSum_[s], scalar(1));
+            const scalar k =
+                alpha/(cellEta(celli, eta, dt, ddtCoeff) + (1 - alpha)*dt/ddtCoeff);
+            penaltyTerm term;
+            term.cell = celli;
+            term.coeff = k*fractions[i]/alphaSum_[s];
+            term.source = term.coeff*body.state().velocityAt(C[celli]);
+            terms_.append(term);
+        }
+        bodyStart_[bodyi + 1] = terms_.size();
+    }
+}
+
+
+void Foam::penaltyForcing::addSurfaceCorrectedTerms
+(
+    const PtrList<immersedBody>& bodies,
+    const scalar eta,
+    const scalar dt,
+    const scalar ddtCoeff
+)
+{
+    const vectorField& C = mesh_.C().primitiveField();
+
+    // the cells whose centre is inside a body
+    List<symmTensor> forms(bodies.size());
+    forAll(bodies, bodyi)
+    {
+        const immersedBody& body = bodies[bodyi];
+        forms[bodyi] = body.quadraticForm();
+        for (const label celli : body.cells())
+        {
+            if (immersedBody::levelSet(C[celli], body.state().centre, forms[bodyi]) <= 0)
+            {
+                ++inside_[celli];
+                solid_[celli] = true;
+            }
+        }
+    }
+
+    const scalar maxCoeff = 1/eta;
+    const scalar maxWallCoeff = 1/max(eta, softWallCells_ ? dt/ddtCoeff : eta);
+    forAll(bodies, bodyi)
+    {
+        const immersedBody& body = bodies[bodyi];
+        for (const label celli : body.cells())
+        {
+            if (immersedBody::levelSet(C[celli], body.state().centre, forms[bodyi]) <= 0)
+            {
+                penaltyTerm term;
+                term.cell = celli;
+                term.coeff =
+                    1/(cellEta(celli, eta, dt, ddtCoeff)*inside_[celli]);
+                term.source = term.coeff*body.state().velocityAt(C[celli]);
+                    terms_.append(term);
+            }
+        }
+        links_->append(body, solid_, wallCell_, maxCoeff, maxWallCoeff, terms_);
+        bodyStart_[bodyi + 1] = terms_.size();
+    }
+
+    for (const immersedBody& body : bodies)
+    {
+        for (const label celli : body.cells())
+        {
+            inside_[celli] = 0;
+            solid_[celli] = false;
+        }
+    }
+}
+
+
+Foam::scalar Foam::penaltyForcing::cellEta
+(
+    const label celli,
+    const scalar eta,
+    const scalar dt,
+    const scalar ddtCoeff
+) const
+{
+    // In a cell with a face on a wall the rigid-body velocity cannot be
+    // imposed when it has a component through the wall (a body touching or
+    // overlapping the wall in a collision): the wall face admits no flux,
+    // and a stiff penalty turns the conflict into a pressure of order
+    // rho_f U dx/eta, 1/penaltyRatio times the fluid's inertial scale, that
+    // pushes an approaching body off and sucks a receding one back
+    // (measured in docs/immersedBodies.md, wall cells). There eta is at
+    // least the fluid's own time scale dt/c (the strength of direct
+    // forcing): U_s is imposed over about a step
+    return softWallCells_ && wallCell_[celli] ? max(eta, dt/ddtCoeff) : eta;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::penaltyForcing::updateCells(PtrList<immersedBody>& bodies)
+{
+    for (immersedBody& body : bodies)
+    {
+        if (!cellsFound_ || body.motion().moves())
+        {
+            body.updateCells(mesh_, cellRadius_);
+        }
+    }
+    cellsFound_ = true;
+}
+
+
+void Foam::penaltyForcing::assemble
+(
+    const PtrList<immersedBody>& bodies,
+    const scalar eta,
+    const scalar dt,
+    const scalar ddtCoeff
+)
+{
+    eta_ = eta;
+    collectCoveredCells(bodies);
+
+    terms_.clear();
+    bodyStart_.setSize(bodies.size() + 1);
+    bodyStart_ = 0;
+    heldVolume_.setSize(bodies.size());
+    heldVolume_ = 0;
+    heldMoment_.setSize(bodies.size());
+    heldMoment_ = Zero;
+    if (!(eta > 0))
+    {
+        return;
+    }
+    if (method_ == method::surfaceCorrected)
+    {
+        addSurfaceCorrectedTerms(bodies, eta, dt, ddtCoeff);
+    }
+    else
+    {
+        addCutCellTerms(bodies, eta, dt, ddtCoeff);
+    }
+    computeHeld(bodies, dt, ddtCoeff);
+}
+
+
+void Foam::penaltyForcing::computeHeld
+(
+    const PtrList<immersedBody>& bodies,
+    const scalar dt,
+    const scalar ddtCoeff
+)
+{
+    const scalarField& V = mesh_.V();
+    const vectorField& C = mesh_.C().primitiveField();
+    const scalar ddtRate = ddtCoeff/dt;
+
+    for (const penaltyTerm& term : terms_)
+    {
+        cellCoeff_[term.cell] += term.coeff;
+    }
+    DynamicList<label> touched;
+    forAll(bodies, bodyi)
+    {
+        const immersedBody& body = bodies[bodyi];
+        forAll(body.cells(), i)
+        {
+            cellAlpha_[body.cells()[i]] = body.fractions()[i];
+        }
+        touched.clear();
+        for (const penaltyTerm& term : bodyTerms(bodyi))
+        {
+            if (cellHeld_[term.cell] == 0)
+            {
+                touched.append(term.cell);
+            }
+            cellHeld_[term.cell] += term.coeff/(cellCoeff_[term.cell] + ddtRate);
+        }
+        const point& X = body.state().centre;
+        for (const label celli : touched)
+        {
+            const scalar v = max(cellHeld_[celli] - cellAlpha_[celli], scalar(0))*V[celli];
+            const vector r = C[celli] - X;
+            heldVolume_[bodyi] += v;
+            heldMoment_[bodyi] += v*(magSqr(r)*symmTensor::I - sqr(r));
+            cellHeld_[celli] = 0;
+        }
+        for (const label celli : body.cells())
+        {
+            cellAlpha_[celli] = 0;
+        }
+    }
+    for (const penaltyTerm& term : terms_)
+    {
+        cellCoeff_[term.cell] = 0;
     }
 }
 
@@ -179,26 +385,14 @@ void Foam::penaltyForcing::bodyForce
 {
     force = Zero;
     torque = Zero;
-    if (!(eta_ > 0))
-    {
-        return;
-    }
     const scalarField& V = mesh_.V();
     const vectorField& C = mesh_.C().primitiveField();
     const point& X = body.state().centre;
-    const labelList& slots = bodySlots_[bodyi];
-    const DynamicList<label>& cells = body.cells();
-    const DynamicList<scalar>& fractions = body.fractions();
-    forAll(cells, i)
+    for (const penaltyTerm& term : bodyTerms(bodyi))
     {
-        // the cell's penalty force, shared between the bodies covering it
-        // in proportion to alpha
-        const label celli = cells[i];
-        const label s = slots[i];
-        const scalar share = fractions[i]/alphaSum_[s];
-        const vector f = (share*coeff_[s]*V[celli])*(U[celli] - velocity_[s]);
+        const vector f = V[term.cell]*(term.coeff*U[term.cell] - term.source);
         force += f;
-        torque += (C[celli] - X) ^ f;
+        torque += (C[term.cell] - X) ^ f;
     }
 }
 
@@ -207,17 +401,16 @@ void Foam::penaltyForcing::addTo(fvVectorMatrix& source) const
 {
     const double cpu0 = immersedSpheroids::processCpuTime();
 
-    // source = -k (U - U_s): implicit part on the diagonal, the explicit
-    // part k U_s in the source (stored negated)
+    // -coeff U + source: the implicit part on the diagonal, the explicit
+    // part in the matrix source (stored negated)
     scalarField& diag = source.diag();
     vectorField& su = source.source();
     const scalarField& V = mesh_.V();
-    forAll(cells_, s)
+    for (const penaltyTerm& term : terms_)
     {
-        const label celli = cells_[s];
-        const scalar k = coeff_[s]*V[celli];
-        diag[celli] -= k;
-        su[celli] -= k*velocity_[s];
+        const scalar v = V[term.cell];
+        diag[term.cell] -= term.coeff*v;
+        su[term.cell] -= term.source*v;
     }
     cpu_ += (immersedSpheroids::processCpuTime() - cpu0);
 }

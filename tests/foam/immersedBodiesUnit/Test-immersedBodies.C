@@ -24,11 +24,14 @@ Description
     5. the coupled runs' body sub-step (coupledBodySet through the
        collision model) against the core's vacuum one (collisionStep, which
        the collision unit tests and validation/dryCollisions run): equal
-       trajectories in vacuum through a contact (integratorTests.C).
+       trajectories in vacuum through a contact (integratorTests.C);
+    6. the surface-corrected penalty of a moving sphere: every cell's
+       equation from the method's definition, the force and torque against
+       the fluid's momentum (surfacePenaltyTests.C).
 
 Usage
     Test-immersedBodies -case CASE -volumeMeshes '(vol16 vol32 vol64)'
-        [-parts '(solidFraction motion penalty badInput integrator)']
+        [-parts '(solidFraction motion penalty badInput integrator surfacePenalty)']
 \*---------------------------------------------------------------------------*/
 
 #include "immersedBodiesTests.H"
@@ -92,12 +95,17 @@ int main(int argc, char *argv[])
         "parts",
         "(name ...)",
         "run only these parts: solidFraction motion penalty badInput integrator"
+        " surfacePenalty"
     );
     #include "setRootCase.H"
     #include "createTime.H"
     #include "createMesh.H"
 
-    wordList parts({"solidFraction", "motion", "penalty", "badInput", "integrator"});
+    wordList parts
+    ({
+        "solidFraction", "motion", "penalty", "badInput", "integrator",
+        "surfacePenalty"
+    });
     args.readListIfPresent("parts", parts);
 
     if (parts.found("solidFraction"))
@@ -130,6 +138,11 @@ int main(int argc, char *argv[])
     {
         Info<< nl << "==== 5. One body integrator" << endl;
         testIntegrator(mesh);
+    }
+    if (parts.found("surfacePenalty"))
+    {
+        Info<< nl << "==== 6. Surface-corrected penalty" << endl;
+        testSurfacePenalty(runTime, mesh);
     }
 
     // OpenFOAM v1912's argList destructor ends the process with

@@ -245,11 +245,18 @@ void immersedBodiesTests::testBadInput(const Time& runTime, const fvMesh& mesh)
     (
         construct
         (
-            "collision { type contact; } filmStabilisation no; viscosity 1e-3; "
+            "collision { type contact; } filmStabilisation no; viscosity 1e-3;"
+            " forcing cutCellFraction; "
           + withBody(goodBody)
         ),
         {"'viscosity'", "remove it", fname},
         "viscosity nothing uses"
+    );
+    expectFatalIOError
+    (
+        construct("forcing directForcing; " + withBody(goodBody)),
+        {"'forcing'", "surfaceCorrected", "cutCellFraction", fname},
+        "unknown forcing"
     );
     expectFatalIOError
     (

@@ -2,7 +2,7 @@
   spheroidFoam: particle-resolved flows of immersed spheroids for OpenFOAM
 -------------------------------------------------------------------------------
 Description
-    3. Penalty: the case's constant/immersedBodiesProperties holds one
+    3. Penalty (forcing cutCellFraction): the case's constant/immersedBodiesProperties holds one
     prolate spheroid with a prescribed constant velocity U_p and angular
     velocity omega in a closed unit box of fluid at rest (rho_f 1000,
     penaltyRatio r = eta/dt = 1e-3). Each step: runTime++,

@@ -103,25 +103,30 @@ void Foam::coupledBodySet::advance
     }
     const vector Fc = toFoam(fc);
     const vector Tc = toFoam(tc);
+
+    // the virtual mass: C_v rho_f V plus the fluid outside the body that the
+    // last step's forcing held to it (both lagged in the explicit force),
+    // implicit on the left, with the last sub-step's accelerations on the
+    // right; the collision force acts on the body's own mass and inertia
     const scalar beta = virtualMass_*fluidDensity_/body.density();
-
-    vector impulse = (externalForce(i) + (1 + beta)*Fc)*dt;
-    vector angularImpulse = (body.hydroTorque() + (1 + beta)*Tc)*dt;
-    if (beta > 0)
-    {
-        impulse += beta*body.mass()*body.acceleration()*dt;
-        angularImpulse +=
-            beta*dt
-           *(
-                toFoam
-                (
-                    collision::worldInertia(s.orientation, toCore(body.bodyInertia()))
-                )
-              & body.angularAcceleration()
-            );
-    }
-
+    const scalar m = body.mass();
+    const scalar addedMass = beta*m + body.heldMass();
+    const vector J = body.bodyInertia();
     bodyState state = toFoam(s);
+    const tensor R = state.R();
+    const symmTensor heldBody = symm(R.T() & body.heldInertia() & R);
+    const vector addedInertia = beta*J + heldBody.diag();
+    const tensor addedWorld =
+        toFoam(collision::worldInertia(s.orientation, toCore(addedInertia)));
+    const tensor JinvWorld =
+        toFoam(collision::inverseWorldInertia(s.orientation, toCore(J)));
+
+    vector impulse = (externalForce(i) + (1 + addedMass/m)*Fc)*dt;
+    vector angularImpulse =
+        (body.hydroTorque() + Tc + (addedWorld & (JinvWorld & Tc)))*dt;
+    impulse += addedMass*body.acceleration()*dt;
+    angularImpulse += dt*(addedWorld & body.angularAcceleration());
+
     body.motion().advance
     (
         state,
@@ -129,8 +134,8 @@ void Foam::coupledBodySet::advance
         dt,
         impulse,
         angularImpulse,
-        (1 + beta)*body.mass(),
-        (1 + beta)*body.bodyInertia()
+        m + addedMass,
+        J + addedInertia
     );
     s = toCore(state);
 }

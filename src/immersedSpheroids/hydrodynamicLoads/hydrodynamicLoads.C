@@ -11,7 +11,8 @@ License
 
 Foam::Istream& Foam::operator>>(Istream& is, bodyFluidSums& b)
 {
-    is >> b.penaltyForce >> b.penaltyTorque >> b.momentum >> b.angularMomentum;
+    is  >> b.penaltyForce >> b.penaltyTorque >> b.momentum >> b.angularMomentum
+        >> b.heldVolume >> b.heldMoment;
     return is;
 }
 
@@ -19,7 +20,8 @@ Foam::Istream& Foam::operator>>(Istream& is, bodyFluidSums& b)
 Foam::Ostream& Foam::operator<<(Ostream& os, const bodyFluidSums& b)
 {
     os  << b.penaltyForce << token::SPACE << b.penaltyTorque << token::SPACE
-        << b.momentum << token::SPACE << b.angularMomentum;
+        << b.momentum << token::SPACE << b.angularMomentum << token::SPACE
+        << b.heldVolume << token::SPACE << b.heldMoment;
     return os;
 }
 
@@ -53,6 +55,7 @@ void Foam::hydrodynamicLoads::update
         bodyFluidSums& s = sums_[bodyi];
         s = bodyFluidSums();
         forcing.bodyForce(bodyi, body, u, s.penaltyForce, s.penaltyTorque);
+        forcing.held(bodyi, body, s.heldVolume, s.heldMoment);
         forAll(cells, i)
         {
             const label celli = cells[i];
@@ -101,6 +104,7 @@ void Foam::hydrodynamicLoads::update
                 << endl;
         }
         body.setHydro(force, torque);
+        body.setHeld(fluidDensity*s.heldVolume, fluidDensity*s.heldMoment);
         body.pushFluidMomentum(s.momentum, s.angularMomentum);
     }
 }

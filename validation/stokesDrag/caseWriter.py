@@ -37,12 +37,16 @@ def fine_half_widths(axes, h, margin):
 
 
 def write_case(case, ar, flow, box, cpd, dt, end_time, u=0.02, nu=1.0,
-               penalty_ratio=1e-6, margin=0.25, growth=1.1, max_ratio=4.0,
-               ddt="Euler", write_interval=None):
+               penalty_ratio=None, forcing=None, margin=0.25, growth=1.1, max_ratio=4.0,
+               ddt="Euler", write_interval=None, ubar=None, body_velocity=None,
+               centre=(0.0, 0.0, 0.0)):
     """Write case/ (system, constant, 0) for a body of aspect ratio ar with its
     symmetry (body x) axis along world x, in a triply periodic box of side
     box (D_eq units), flow direction flow = 'x' (axial) or 'y' (transverse),
-    cpd cells per D_eq in the fine region, Euler steps dt up to end_time."""
+    cpd cells per D_eq in the fine region, Euler steps dt up to end_time.
+    ubar: the superficial velocity held (default u along the flow directions);
+    body_velocity: a prescribed constant velocity of the body (default fixed),
+    which starts at centre."""
     h = 1.0 / cpd
     axes = semi_axes(ar)
     fine = fine_half_widths(axes, h, margin)
@@ -58,7 +62,8 @@ def write_case(case, ar, flow, box, cpd, dt, end_time, u=0.02, nu=1.0,
     # flow: 'x' (along the symmetry axis), 'y' (across it) or 'xy' (both at
     # once: Stokes flow is linear, the drag along x and along y are those of the
     # two flows; each mean component is held by its own meanVelocityForce)
-    ubar = (u if "x" in flow else 0.0, u if "y" in flow else 0.0, 0.0)
+    if ubar is None:
+        ubar = (u if "x" in flow else 0.0, u if "y" in flow else 0.0, 0.0)
     if write_interval is None:
         write_interval = 10 ** 8       # the runner stops the run with stopAt writeNow
     write(os.path.join(case, "system", "controlDict"), "dictionary", "system", "controlDict", f"""\
@@ -186,23 +191,27 @@ nu              {nu:.12g};
 """)
     write(os.path.join(case, "constant", "turbulenceProperties"), "dictionary", "constant",
           "turbulenceProperties", "simulationType  laminar;\n")
+    motion = ("{ type fixed; }" if body_velocity is None else
+              "{ type prescribed; velocity (" + " ".join(f"{v:.12g}" for v in body_velocity)
+              + "); angularVelocity (0 0 0); }")
+    # the module's defaults unless a run asks for another forcing or penalty
+    settings = "".join(f"{k:<16}{v};\n" for k, v in (("forcing", forcing),
+                                                      ("penaltyRatio", penalty_ratio))
+                       if v is not None)
     write(os.path.join(case, "constant", "immersedBodiesProperties"), "dictionary", "constant",
           "immersedBodiesProperties", f"""\
 fluidDensity    1;
 
-// eta = penaltyRatio x deltaT: small against the viscous time of a cell,
-// h^2/nu, so the fully covered cells hold U = 0 to ~1e-6
-penaltyRatio    {penalty_ratio:.12g};
-
+{settings}
 bodies
 {{
     spheroid
     {{
         semiAxes        ({axes[0]:.12g} {axes[1]:.12g} {axes[2]:.12g});
         density         1;
-        centre          (0 0 0);
+        centre          ({centre[0]:.12g} {centre[1]:.12g} {centre[2]:.12g});
         axis            (1 0 0);
-        motion          {{ type fixed; }}
+        motion          {motion}
     }}
 }}
 

@@ -14,6 +14,7 @@ the leading coefficient b is universal (Hasimoto's lattice sum:
 correction hardly depends on the body's discretisation; the sphere at a
 second box size checks it.
 """
+import json
 import math
 import os
 import sys
@@ -88,13 +89,18 @@ def main(runs_csv, out):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    rows = read_csv(runs_csv, missing_ok=False)
-    md = []
+    all_rows = read_csv(runs_csv, missing_ok=False)
+    rows = [r for r in all_rows if r.get("forcing", "surfaceCorrected") == "surfaceCorrected"]
+    cut_rows = [r for r in all_rows if r.get("forcing") == "cutCellFraction"]
+    md = ["# Stokes drag of a fixed spheroid: forcing surfaceCorrected (the default)", "",
+          "Produced by `validation/stokesDrag/Allrun -plot` from results/runs.csv.", ""]
+    metrics = {}
     fits = box_fits(rows, sd.LAMBDA_BOX)
 
     # 1. viscous number
     lam_rows = sorted((r for r in rows if r["body"] == "sphere" and f(r, "L_over_D") == 4
-                       and f(r, "cpd") == 12), key=lambda r: -f(r, "lambda"))
+                       and f(r, "cpd") == 12 and f(r, "lambda") in sd.LAMBDAS),
+                      key=lambda r: -f(r, "lambda"))
     KH4 = sd.hasimoto_K(math.pi / 6 / 4 ** 3)
     md += ["## Steady drag against the viscous number of a cell (sphere, L/D = 4, 12 cells/D)", "",
            f"Hasimoto/Sangani-Acrivos simple cubic array at L/D = 4 (phi = {math.pi / 6 / 64:.5f}): "
@@ -107,6 +113,12 @@ def main(runs_csv, out):
         md.append(f"| {f(r, 'lambda'):g} | {r['dt']} | {f(r, 'Kx'):.4f} | {f(r, 'Ky'):.4f} | "
                   f"{f(r, 'Kx') / KH4 - 1:+.1%} | {kinf:.4f} | {r['steps_stage2']} | {r['wall_s']} | "
                   f"{r['cpu_s']} |")
+    if len(lam_rows) >= 2:
+        ks = [f(r, "Kx") for r in lam_rows]
+        spread = (max(ks) - min(ks)) / np.mean(ks) * 100
+        metrics["lambda_spread_pct_12"] = round(spread, 4)
+        md += ["", f"Spread over lambda = {min(sd.LAMBDAS):g}-{max(sd.LAMBDAS):g}: "
+               f"(max - min)/mean = {spread:.3f} % ({len(lam_rows)} runs)."]
     md.append("")
 
     # 2. box size
@@ -180,10 +192,104 @@ def main(runs_csv, out):
                                  error_x=f"{err[0]:.5f}", error_y=f"{err[1]:.5f}",
                                  steps=steps, wall_s=r["wall_s"], cpu_s=r["cpu_s"]))
     md.append("")
+
+    # the observed order: |error| = C cpd^-p fitted over the resolutions run,
+    # and the self-convergence order of the three finest (no reference needed)
+    md += ["## Observed order of convergence", "",
+           "p: the slope of log|error| against log(cells/D), least squares over the resolutions "
+           "run (error after the box correction). p_self: from the three finest runs alone, "
+           "(K2 - K1)/(K3 - K2) = (n1^-p - n2^-p)/(n2^-p - n3^-p), which needs no reference.", "",
+           "| body | flow | cells/D | errors | p | p_self |", "|---|---|---|---|---|---|"]
+    orders = []
+    for body in sd.BODIES:
+        rr = [r for r in res_rows if r["body"] == body]
+        if len(rr) < 2:
+            continue
+        n = np.array([float(r["cpd"]) for r in rr])
+        for d in ("x",) if body == "sphere" else ("x", "y"):
+            e = np.array([abs(float(r[f"error_{d}"])) for r in rr])
+            p = -np.polyfit(np.log(n), np.log(np.maximum(e, 1e-12)), 1)[0]
+            k = np.array([float(r[f"K{d}_inf"]) for r in rr])
+            p_self = float("nan")
+            if len(rr) >= 3:
+                ratio = (k[-2] - k[-3]) / (k[-1] - k[-2])
+                lo, hi = 0.05, 8.0
+                g = lambda q: (n[-3] ** -q - n[-2] ** -q) / (n[-2] ** -q - n[-1] ** -q) - ratio
+                if g(lo) * g(hi) < 0:
+                    for _ in range(200):
+                        mid = 0.5 * (lo + hi)
+                        lo, hi = (mid, hi) if g(lo) * g(mid) > 0 else (lo, mid)
+                    p_self = 0.5 * (lo + hi)
+            orders.append(p)
+            md.append(f"| {LABEL[body]} | {DIRS[d] if body != 'sphere' else '-'} | "
+                      + ", ".join(f"{v:g}" for v in n) + " | "
+                      + ", ".join(f"{float(r[f'error_{d}']):+.2%}" for r in rr)
+                      + f" | {p:.2f} | {p_self:.2f} |")
+    md.append("")
+    if orders:
+        metrics["min_observed_order"] = round(float(min(orders)), 3)
+    for cpd in (12, 16, 24):
+        errs = [abs(float(r[f"error_{d}"])) * 100 for r in res_rows if float(r["cpd"]) == cpd
+                for d in "xy"]
+        if errs:
+            metrics[f"max_abs_error_pct_{cpd}"] = round(max(errs), 4)
+
+    # the cut-cell forcing, for comparison (same harness, same box correction)
+    cut_res = []
+    if cut_rows:
+        md += [f"## Forcing cutCellFraction, for comparison (sphere, L/D = 4, lambda = "
+               f"{sd.LAMBDA_CUTCELL:g}, box correction of the surfaceCorrected fits)", "",
+               "| cells/D_eq | cells | K(4) | K_inf | error | steps | wall [s] | CPU [s] |",
+               "|---|---|---|---|---|---|---|---|"]
+        for r in sorted(cut_rows, key=lambda r: f(r, "cpd")):
+            kinf = correct(f(r, "Kx"), 4, fits[("sphere", "x")]) if ("sphere", "x") in fits \
+                else float("nan")
+            steps = int(r["steps_stage1"]) + int(r["steps_stage2"])
+            md.append(f"| {f(r, 'cpd'):g} | {r['cells']} | {f(r, 'Kx'):.4f} | {kinf:.4f} | "
+                      f"{kinf - 1:+.1%} | {steps} | {r['wall_s']} | {r['cpu_s']} |")
+            cut_res.append(dict(cpd=f(r, "cpd"), cells=float(r["cells"]), err=kinf - 1,
+                                cpu=float(r["cpu_s"]), steps=steps))
+        md.append("")
+
+    # the headline trade: what 2 % on the sphere's drag costs with each forcing
+    def cost_to(series, target=0.02):
+        """(cpd, cells, CPU s, how) at |error| = target: the coarsest run within it, or a
+        power-law interpolation/extrapolation of |error|, cells and CPU in cells/D."""
+        series = sorted(series, key=lambda r: r["cpd"])
+        within = [r for r in series if abs(r["err"]) <= target]
+        if within and within[0] is series[0]:
+            r = within[0]
+            return r["cpd"], r["cells"], r["cpu"], "measured (coarsest run)"
+        n = np.log([r["cpd"] for r in series])
+        pe = np.polyfit(n, np.log(np.abs([r["err"] for r in series])), 1)
+        x = (math.log(target) - pe[1]) / pe[0]
+        pc = np.polyfit(n, np.log([r["cells"] for r in series]), 1)
+        pt = np.polyfit(n, np.log([r["cpu"] for r in series]), 1)
+        how = "interpolated" if n[0] <= x <= n[-1] else "extrapolated"
+        return math.exp(x), math.exp(np.polyval(pc, x)), math.exp(np.polyval(pt, x)), how
+    sph_new = [dict(cpd=float(r["cpd"]), cells=float(r["cells"]), err=float(r["error_x"]),
+                    cpu=float(r["cpu_s"])) for r in res_rows if r["body"] == "sphere"]
+    if sph_new and len(cut_res) >= 2:
+        md += ["## The cost of 2 % on the sphere's drag", "",
+               "| forcing | cells/D | cells (L/D = 4) | CPU to steady state [s] | how |",
+               "|---|---|---|---|---|"]
+        for label, series in (("cutCellFraction (lambda 0.25)", cut_res),
+                              (f"surfaceCorrected (lambda {sd.LAMBDA:g})", sph_new)):
+            cpd, cells, cpu, how = cost_to(series)
+            md.append(f"| {label} | {cpd:.1f} | {cells:.0f} | {cpu:.0f} | {how} |")
+            key = "cutCell" if label.startswith("cut") else "surfaceCorrected"
+            metrics[f"sphere_cpd_for_2pct_{key}"] = round(cpd, 2)
+            metrics[f"sphere_cells_for_2pct_{key}"] = round(cells)
+            metrics[f"sphere_cpu_s_for_2pct_{key}"] = round(cpu, 1)
+        md.append("")
     if res_rows:
         write_csv(os.path.join(out, "resolution.csv"), res_rows)
     with open(os.path.join(out, "table.md"), "w") as fh:
         fh.write("\n".join(md) + "\n")
+    with open(os.path.join(out, "metrics.json"), "w") as fh:
+        json.dump({k: (v if not (isinstance(v, float) and not math.isfinite(v)) else None)
+                   for k, v in metrics.items()}, fh, indent=1, sort_keys=True)
+        fh.write("\n")
     print("\n".join(md))
 
     # figures: error and CPU time against cells per diameter
@@ -204,7 +310,13 @@ def main(runs_csv, out):
             ax[1].loglog(n, [float(r["cpu_s"]) for r in rr], "o-", color=colors[body],
                          label=LABEL[body])
         nn = np.array([8, 24])
-        ax[0].loglog(nn, 12 * 8 / nn, "k:", lw=1, label="slope -1")
+        ax[0].loglog(nn, 1.0 * (8 / nn) ** 2, "k:", lw=1, label="slope -2")
+        if cut_res:
+            ax[0].loglog([r["cpd"] for r in cut_res], [abs(r["err"]) * 100 for r in cut_res],
+                         "x:", color="0.5", label=f"sphere, cutCellFraction (lambda "
+                         f"{sd.LAMBDA_CUTCELL:g})")
+            ax[1].loglog([r["cpd"] for r in cut_res], [r["cpu"] for r in cut_res], "x:",
+                         color="0.5", label="sphere, cutCellFraction")
         ax[0].set_xlabel("cells per equal-volume diameter")
         ax[0].set_ylabel("|K_inf / K_analytic - 1|  [%]")
         ax[0].set_title(f"Stokes drag error (box-corrected), lambda = {sd.LAMBDA:g}")
@@ -212,7 +324,7 @@ def main(runs_csv, out):
         ax[0].legend(fontsize=8)
         ax[1].set_xlabel("cells per equal-volume diameter")
         ax[1].set_ylabel("solver CPU time [s]")
-        ax[1].set_title("cost (L/D = 4, one core, to steady state)")
+        ax[1].set_title("cost (L/D = 4, to steady state)")
         ax[1].grid(True, which="both", alpha=0.3)
         ax[1].legend(fontsize=8)
         from matplotlib.ticker import NullFormatter, ScalarFormatter
@@ -255,7 +367,8 @@ def main(runs_csv, out):
         ax.axhline(KH4, color="C2", ls="--", label="Hasimoto array, L/D = 4")
         ax.set_xlabel("viscous number of a cell  lambda = nu dt / h^2")
         ax.set_ylabel("K = F / (6 pi mu r U)")
-        ax.set_title("Sphere, 12 cells/D: steady drag depends on dt")
+        ax.set_title("Sphere, 12 cells/D: steady drag against the step")
+        ax.set_ylim(KH4 * 0.97, KH4 * 1.01)
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=8)
         fig.tight_layout()

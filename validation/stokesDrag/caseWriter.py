@@ -84,7 +84,7 @@ writeFormat     binary;
 writePrecision  12;
 writeCompression off;
 timeFormat      general;
-timePrecision   10;
+timePrecision   17;
 
 // the runner changes deltaT and stopAt while the solver runs
 runTimeModifiable yes;

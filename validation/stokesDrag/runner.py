@@ -94,6 +94,28 @@ def _solver(case, np_, log_name):
         raise RuntimeError(f"pimpleFoam failed in {case} (see {log_name})")
 
 
+def _restart_precision(case, current):
+    """The timePrecision under which the latest time directory's name is the
+    one OpenFOAM computes from its value at a restart: the current one if it
+    is, else the one that reproduces it (OpenFOAM widens the names of times
+    that accumulated round-off, beyond what it searches for at a start)."""
+    folder = os.path.join(case, "processor0") if os.path.isdir(
+        os.path.join(case, "processor0")) else case
+    names = []
+    for name in os.listdir(folder):
+        try:
+            names.append((float(name), name))
+        except ValueError:
+            pass
+    if not names:
+        return current
+    value, name = max(names)
+    for p in [current] + list(range(17, 0, -1)):
+        if f"{value:.{p}g}" == name:
+            return p
+    return current
+
+
 def _load_state(case):
     path = os.path.join(case, "runner.json")
     if not os.path.exists(path):
@@ -161,8 +183,9 @@ def run_case(case, ar, flow, box, cpd, lam=1.0, u=0.02, dt1=0.01, tol1=1e-3, tol
         t_next = state["t"] + n * step
         if t_next > t_max + 1e-9:
             raise RuntimeError(f"{case}: not converged by t = {t_max}")
+        state["precision"] = _restart_precision(case, state.get("precision", 17))
         set_control(case, deltaT=f"{step:.12g}", endTime=f"{t_next:.12g}",
-                    writeInterval=f"{n * step:.12g}")
+                    writeInterval=f"{n * step:.12g}", timePrecision=str(state["precision"]))
         _solver(case, np_, "log.solver")
         with open(os.path.join(case, "log.solver")) as f:
             cpu = re.findall(r"^ExecutionTime = (\S+) s", f.read(), flags=re.M)

@@ -24,7 +24,7 @@ from validationTools import write_csv  # noqa: E402
 run_root = os.path.abspath(sys.argv[1])
 here = os.path.abspath(sys.argv[2])
 rows = []
-CONFIGS = ("Euler, C_v 0", "backward, C_v 0", "backward, C_v 0.5", "backward, C_v 1")
+CONFIGS = ("Euler, C_v 0", "backward, C_v 0", "backward, C_v 0.5")
 fig, axes = plt.subplots(1, len(CONFIGS), figsize=(5 * len(CONFIGS), 4.2))
 for d in sorted(glob.glob(os.path.join(run_root, "*-*"))):
     scheme, cv, ratio = os.path.basename(d).split("-", 2)

@@ -161,9 +161,11 @@ def run_case(case, ar, flow, box, cpd, lam=1.0, u=0.02, dt1=0.01, tol1=1e-3, tol
                            check=True)
         if np_ > 1:
             with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
+                # simple: Debian's OpenFOAM has no scotch
                 f.write("FoamFile { version 2.0; format ascii; class dictionary;"
                         " object decomposeParDict; }\n"
-                        f"numberOfSubdomains {np_};\nmethod scotch;\n")
+                        f"numberOfSubdomains {np_};\nmethod simple;\n"
+                        f"simpleCoeffs {{ n ({np_} 1 1); delta 0.001; }}\n")
             with open(os.path.join(case, "log.decomposePar"), "w") as out:
                 subprocess.run(["decomposePar"], cwd=case, stdout=out,
                                stderr=subprocess.STDOUT, check=True)

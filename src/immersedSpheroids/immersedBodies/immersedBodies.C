@@ -44,7 +44,7 @@ constexpr label subStepsDefault = 1;
 constexpr collision::Range subStepsRange{1, 100000};
 
 //- The virtual-mass coefficient C_v of the stabilisation (0: off)
-constexpr scalar virtualMassDefault = 1;
+constexpr scalar virtualMassDefault = 0.5;
 constexpr collision::Range virtualMassRange{0, 10};
 
 //- The penalty time scale in the cells on a wall patch

@@ -9,6 +9,8 @@ License
 #include "wallPolyPatch.H"
 #include "processCpuTime.H"
 #include "cellSolidFraction.H"
+#include "diagTensor.H"
+#include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -365,6 +367,22 @@ void Foam::penaltyForcing::computeHeld
         for (const label celli : body.cells())
         {
             cellAlpha_[celli] = 0;
+        }
+
+        // the Stokes layer the step sets moving beyond the held cells: the
+        // momentum thickness 2 sqrt(nu dt/pi) of Stokes' first problem over
+        // the tangential motion of the surface (translation: the largest of
+        // the three axes; rotation: per body axis); once, on the master (the
+        // held sums are added over the ranks)
+        if (links_.valid() && Pstream::master())
+        {
+            const scalar delta =
+                2*Foam::sqrt(links_->nu()*dt/constant::mathematical::pi);
+            heldVolume_[bodyi] += delta*cmptMax(body.tangentialArea());
+            const tensor R = body.state().R();
+            const vector& B = body.tangentialMoment();
+            heldMoment_[bodyi] +=
+                delta*symm(R & diagTensor(B.x(), B.y(), B.z()) & R.T());
         }
     }
     for (const penaltyTerm& term : terms_)

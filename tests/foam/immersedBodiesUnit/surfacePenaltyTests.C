@@ -21,6 +21,9 @@ Description
       body velocity at the crossing point (capped at c = 1/(r dt),
       s = c U_w);
     - every other cell keeps its velocity.
+    Also the sphere's surface integrals of the Stokes-layer estimate
+    (immersedBody::tangentialArea, tangentialMoment; penaltyForcing::held):
+    int (1 - n_k^2) dS = 8 pi R^2/3 and int |e_k ^ x|^2 dS = 8 pi R^4/3.
     Checks: every cell against that (round-off), at two step sizes (the
     last two steps take half the step: the link terms hold no dt); the reported
     force and torque equal minus the change of the momentum of the fluid
@@ -31,6 +34,7 @@ Description
 
 #include "immersedBodiesTests.H"
 #include "immersedBodies.H"
+#include "mathematicalConstants.H"
 #include <fstream>
 
 using namespace testChecks;
@@ -92,6 +96,20 @@ void immersedBodiesTests::testSurfacePenalty(Time& runTime, const fvMesh& mesh)
     Foam::mv(saved, file);
     const immersedBody& body = bodies.bodies()[0];
     const scalar rhoF = bodies.fluidDensity();
+    {
+        const scalar area = 8*constant::mathematical::pi*R*R/3;
+        const scalar e = max
+        (
+            cmptMax(cmptMag(body.tangentialArea() - area*vector::one))/area,
+            cmptMax(cmptMag(body.tangentialMoment() - area*R*R*vector::one))/(area*R*R)
+        );
+        check
+        (
+            e < 2e-3,
+            "surface penalty: the sphere's tangential surface integrals 8 pi R^2/3 and"
+            " 8 pi R^4/3 per axis (rel. error " + str(e) + ")"
+        );
+    }
 
     const scalarField& V = mesh.V();
     const vectorField& C = mesh.C().primitiveField();

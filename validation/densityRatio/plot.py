@@ -7,6 +7,7 @@ A run is called stable when it completed, stayed bounded (|u| < 1 m/s; the termi
 here are below 0.2 m/s) and its oscillation is below 2 %.
 """
 import glob
+import json
 import os
 import sys
 from pathlib import Path
@@ -64,6 +65,7 @@ fig.savefig(os.path.join(here, "densityRatio.png"), dpi=110)
 rows.sort(key=lambda r: (r["scheme"], -r["ratio"]))
 os.makedirs(os.path.join(here, "results"), exist_ok=True)
 write_csv(os.path.join(here, "results", "runs.csv"), rows)
+metrics = {}
 with open(os.path.join(here, "results", "summary.md"), "w") as f:
     f.write("| scheme, virtual mass | rho_p/rho_f | status | stable | max speed (m/s) | final u_z (m/s) "
             "| odd-even oscillation |\n|---|---|---|---|---|---|---|\n")
@@ -78,4 +80,12 @@ with open(os.path.join(here, "results", "summary.md"), "w") as f:
             lowest = r["ratio"]
         if lowest is not None:
             f.write(f"\n{s}: stable for every ratio tested down to rho_p/rho_f = {lowest:g}\n")
+        key = s.replace(", C_v ", "_cv").replace(".", "p")
+        metrics[f"lowest_stable_ratio_{key}"] = lowest
+    for r in rows:
+        if r["scheme"] == "backward, C_v 0.5" and r["ratio"] == 0.5:
+            metrics["oscillation_pct_default_ratio_0p5"] = round(100 * r["oscillation"], 3)
+with open(os.path.join(here, "results", "metrics.json"), "w") as f:
+    json.dump(metrics, f, indent=1, sort_keys=True)
+    f.write("\n")
 print(open(os.path.join(here, "results", "summary.md")).read())

@@ -1,0 +1,174 @@
+#!/usr/bin/python3
+"""Tables, metrics and the figure of validation/finiteReynoldsDrag from
+results/runs.csv and results/<name>.dat (called by `finiteReynoldsDrag.py plot`)."""
+import os
+
+import numpy as np
+
+import references as ref
+
+HEADLINE_CPD = 16
+
+
+def pct(value, reference):
+    return 100.0 * (value / reference - 1.0)
+
+
+def sphere_tables(rows, metrics):
+    md = ["## Sphere", "",
+          "Reference: the standard drag curve (Clift, Grace & Weber 1978); also Schiller-Naumann "
+          "and Johnson & Patel (1999, body-fitted). Change: C_D(t_end) - C_D(t_end - 10 D/U), "
+          "relative (how steady the answer is).", "",
+          "| Re | cells/D | cells | C_D | standard curve | error | Schiller-Naumann | error | "
+          "Johnson & Patel | error | change | CPU [s] |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    sphere = sorted((r for r in rows if r["shape"] == "sphere"), key=lambda r: (r["Re"], r["cpd"]))
+    worst = 0.0
+    for r in sphere:
+        re, cd = r["Re"], r["C_D"]
+        std, sn = ref.standard_drag_curve(re), ref.schiller_naumann(re)
+        jp = ref.JOHNSON_PATEL.get(int(re))
+        md.append(f"| {re:g} | {r['cpd']} | {r['cells']} | {cd:.4f} | {std:.4f} | "
+                  f"{pct(cd, std):+.2f} % | {sn:.4f} | {pct(cd, sn):+.2f} % | "
+                  + (f"{jp:.2f} | {pct(cd, jp):+.2f} %" if jp else "- | -")
+                  + f" | {r['C_D_change_pct']:+.4f} % | {r['cpu_s']} |")
+        if r["cpd"] == HEADLINE_CPD:
+            metrics[f"sphere_error_pct_Re{re:g}_{HEADLINE_CPD}"] = round(pct(cd, std), 3)
+            worst = max(worst, abs(pct(cd, std)))
+    if any(r["cpd"] == HEADLINE_CPD for r in sphere):
+        metrics[f"sphere_max_abs_error_pct_{HEADLINE_CPD}"] = round(worst, 3)
+    # resolution series at Re 50: the observed order against the standard curve
+    series = [r for r in sphere if r["Re"] == 50]
+    if len(series) >= 2:
+        h = np.array([1.0 / r["cpd"] for r in series])
+        e = np.array([pct(r["C_D"], ref.standard_drag_curve(50)) for r in series])
+        order = float(np.polyfit(np.log(h), np.log(np.abs(e)), 1)[0])
+        metrics["sphere_observed_order_Re50"] = round(order, 3)
+        md += ["", f"Re 50 over {', '.join(str(r['cpd']) for r in series)} cells/D: errors "
+               + ", ".join(f"{x:+.2f} %" for x in e)
+               + f" against the standard curve; observed order {order:.2f} (least-squares "
+               "slope of log|error| against log h)."]
+    return md
+
+
+def spheroid_tables(rows, metrics):
+    md = ["", "## Prolate spheroid AR 2.5", "",
+          "Reference: Zastawny et al. (2012) for the drag; for the lift the linear-resistance "
+          "estimate |C_L| = (C_D90 - C_D0) sin(phi) cos(phi) from Zastawny's C_D0 and C_D90 "
+          "(exact in Stokes flow, an estimate at finite Re).", "",
+          "| Re | incidence | cells/D | cells | C_D | Zastawny | error | abs(C_L) | estimate | "
+          "ratio | change | CPU [s] |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    worst = None
+    for r in sorted((r for r in rows if r["shape"] == "prolate"),
+                    key=lambda r: (r["Re"], r["incidence"])):
+        re, phi, cd, cl = r["Re"], r["incidence"], r["C_D"], r["C_L"]
+        z = ref.zastawny_drag(re, phi)
+        lift = ref.linear_resistance_lift(re, phi)
+        ratio = f"{cl / lift:.3f}" if lift > 1e-9 else "-"
+        md.append(f"| {re:g} | {phi} | {r['cpd']} | {r['cells']} | {cd:.4f} | {z:.4f} | "
+                  f"{pct(cd, z):+.2f} % | {cl:.4f} | {lift:.4f} | {ratio} | "
+                  f"{r['C_D_change_pct']:+.4f} % | {r['cpu_s']} |")
+        if r["cpd"] == HEADLINE_CPD:
+            worst = max(worst or 0.0, abs(pct(cd, z)))
+            metrics[f"spheroid_error_pct_Re{re:g}_i{phi}_{HEADLINE_CPD}"] = round(pct(cd, z), 3)
+            if phi == 45:
+                metrics[f"spheroid_lift45_Re{re:g}_{HEADLINE_CPD}"] = round(cl, 4)
+                metrics[f"spheroid_lift45_ratio_to_estimate_Re{re:g}_{HEADLINE_CPD}"] = \
+                    round(cl / lift, 4)
+    if worst is not None:
+        metrics[f"spheroid_max_abs_error_pct_{HEADLINE_CPD}"] = round(worst, 3)
+    r0, r90 = ref.zastawny_stokes_check()
+    k0, k90 = ref.stokes_prolate_k(2.5)
+    metrics["zastawny_over_exact_stokes_0"] = round(r0, 4)
+    metrics["zastawny_over_exact_stokes_90"] = round(r90, 4)
+    md += ["", "The reference checked at its own lower end: at Re 0.1 the correlation gives "
+           f"{100 * (r0 - 1):+.1f} % (along) and {100 * (r90 - 1):+.1f} % (across) against the "
+           f"exact Stokes drag of the AR 2.5 spheroid (24/Re times K = {k0:.4f} and {k90:.4f}, "
+           "Oberbeck's formulas, which validation/stokesDrag reproduces within 0.2 % at 16 "
+           "cells/D for AR 2)."]
+    series = sorted((r for r in rows if r["shape"] == "prolate" and r["Re"] == 100
+                     and r["incidence"] == 45), key=lambda r: r["cpd"])
+    if len(series) >= 3:
+        cds = ", ".join(f"{r['C_D']:.4f}" for r in series)
+        cls = ", ".join(f"{r['C_L']:.4f}" for r in series)
+        # Richardson extrapolation from the two finest at second order
+        f1, f2 = series[-2], series[-1]
+        q = (f2["cpd"] / f1["cpd"]) ** 2
+        cd_inf = f2["C_D"] + (f2["C_D"] - f1["C_D"]) / (q - 1)
+        cl_inf = f2["C_L"] + (f2["C_L"] - f1["C_L"]) / (q - 1)
+        metrics["spheroid_Re100_i45_richardson_change_pct_16"] = \
+            round(100 * (f2["C_D"] / cd_inf - 1), 3)
+        md += ["", f"Resolution, Re 100 at 45 degrees, {', '.join(str(r['cpd']) for r in series)} "
+               f"cells/D: C_D {cds}; |C_L| {cls}. Extrapolated (second order from the two finest): "
+               f"C_D {cd_inf:.4f} ({100 * (f2['C_D'] / cd_inf - 1):+.2f} % at 16), |C_L| "
+               f"{cl_inf:.4f} ({100 * (f2['C_L'] / cl_inf - 1):+.2f} % at 16)."]
+    return md
+
+
+def tables(rows, metrics):
+    return (["# Finite-Reynolds-number drag of a fixed sphere and prolate spheroid", "",
+             "Produced by `validation/finiteReynoldsDrag/Allrun -plot` from results/runs.csv. "
+             "C_D = F_x/(rho U^2/2 pi D_eq^2/4), C_L = |F_y|/(same); Euler steps dt = h/U to "
+             "t = 40 D_eq/U; the library's defaults (forcing surfaceCorrected)."]
+            + [""] + sphere_tables(rows, metrics) + spheroid_tables(rows, metrics))
+
+
+def figure(rows, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(2, 2, figsize=(11, 8.5))
+    res = np.linspace(20, 110, 200)
+    a = ax[0, 0]
+    a.plot(res, [ref.standard_drag_curve(x) for x in res], "k-", label="standard curve (CGW 1978)")
+    a.plot(res, [ref.schiller_naumann(x) for x in res], "k:", label="Schiller-Naumann")
+    a.plot(list(ref.JOHNSON_PATEL), list(ref.JOHNSON_PATEL.values()), "ks", mfc="none",
+           label="Johnson & Patel 1999")
+    for cpd, m in ((8, "v"), (12, "^"), (16, "o")):
+        pts = [(r["Re"], r["C_D"]) for r in rows if r["shape"] == "sphere" and r["cpd"] == cpd]
+        if pts:
+            a.plot(*zip(*sorted(pts)), m, color="C3", label=f"spheroidFoam, {cpd} cells/D")
+    a.set_xlabel("Re = U D / nu")
+    a.set_ylabel("C_D")
+    a.set_title("Fixed sphere")
+    a.legend(fontsize=8)
+    a.grid(True, alpha=0.3)
+
+    phis = np.linspace(0, 90, 91)
+    for k, re in enumerate(sorted({r["Re"] for r in rows if r["shape"] == "prolate"})):
+        pts = sorted((r["incidence"], r["C_D"], r["C_L"]) for r in rows
+                     if r["shape"] == "prolate" and r["Re"] == re)
+        c = f"C{k}"
+        ax[0, 1].plot(phis, [ref.zastawny_drag(re, p) for p in phis], "-", color=c,
+                      label=f"Zastawny et al. 2012, Re {re:g}")
+        ax[0, 1].plot([p[0] for p in pts], [p[1] for p in pts], "o", color=c,
+                      label=f"spheroidFoam, Re {re:g}")
+        ax[1, 0].plot(phis, [ref.linear_resistance_lift(re, p) for p in phis], "--", color=c,
+                      label=f"(C_D90 - C_D0) sin cos, Re {re:g}")
+        ax[1, 0].plot([p[0] for p in pts], [p[2] for p in pts], "o", color=c,
+                      label=f"spheroidFoam, Re {re:g}")
+    for a, yl, title in ((ax[0, 1], "C_D", "Prolate spheroid AR 2.5: drag"),
+                         (ax[1, 0], "|C_L|", "Prolate spheroid AR 2.5: lift")):
+        a.set_xlabel("incidence phi [deg] (stream to symmetry axis)")
+        a.set_ylabel(yl + " (D_eq normalisation)")
+        a.set_title(title)
+        a.legend(fontsize=8)
+        a.grid(True, alpha=0.3)
+
+    a = ax[1, 1]
+    results = os.path.dirname(path)
+    for r in rows:
+        f = os.path.join(results, f"{r['name']}.dat")
+        if r["cpd"] == HEADLINE_CPD and os.path.exists(f):
+            d = np.loadtxt(f)
+            a.semilogy(d[1:, 0], np.abs(d[1:, 1] / d[-1, 1] - 1) + 1e-12, lw=1,
+                       label=r["name"])
+    a.set_xlabel("t U / D_eq")
+    a.set_ylabel("|C_D(t)/C_D(t_end) - 1|")
+    a.set_title("Approach to the steady drag")
+    a.set_ylim(1e-7, 1)
+    a.legend(fontsize=6, ncol=2)
+    a.grid(True, alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)

@@ -3,7 +3,7 @@
 shear at Re = gamma a^2/nu = 0.1: the runs of validation/jefferyOrbit (see
 README.md), their table and figures.
 
-    jefferyOrbit.py run [--quick] [--group G ...] [--force] [--collect]
+    jefferyOrbit.py run [--quick] [--group G ...] [--only NAME ...] [--force] [--collect]
     jefferyOrbit.py plot
     jefferyOrbit.py single CASE [--cpd N] [--dt DT] [--end-time T] [--box LX H LZ]
                                [--density-ratio R] [--virtual-mass CV]
@@ -43,7 +43,7 @@ MESH = dict(cpd=8, growth=1.2, max_ratio=8.0, box=(10.0, 10.0, 6.0))
 FIELDS = ["name", "group", "density_ratio", "virtualMass", "dt", "penaltyRatio", "subSteps",
           "ddt", "nOuterCorrectors", "cpd", "cells", "lambda", "end_time", "steps", "wall_s",
           "cpu_s", "status", "growth_per_step", "alternation",
-          "omega_end", "omega_jeffery_end", "omega_mean", "phi_mean", "phi0", "box", "T_half_pi", "T_pi", "T_fit", "r_fit", "T_jeffery",
+          "omega_end", "omega_jeffery_end", "omega_mean", "phi_mean", "phi0", "box", "T_half_pi", "T_pi", "T_2pi", "T_fit", "r_fit", "T_jeffery",
           "host", "date", "commit"]
 
 
@@ -52,13 +52,16 @@ def campaign(quick=False):
     if quick:
         runs.append(("quick", "quick", dict(MESH, dt=0.0007, end_time=0.07, virtual_mass=0.5)))
         return runs
-    # the measured orbit: plain explicit coupling (virtualMass 0) at the largest
-    # stable step; and with the virtual-mass stabilisation (the library default
-    # C_v = 0.5) at a larger step, over a full period
-    runs.append(("orbit", "orbit-rho1-cv0-dt0.0007",
-                 dict(MESH, dt=0.0007, end_time=10.5, write_interval=3.5, virtual_mass=0)))
+    # the measured orbit with the library's defaults (virtualMass 0.5, penaltyRatio
+    # 1e-3, forcing surfaceCorrected), over a full period, at two resolutions; the
+    # step is the largest whose step-to-step alternation decays at that resolution
+    # (300-step probes: 6 cells, gamma dt 1.5e-3 grows by 1.016 per step, 1e-3
+    # decays by 0.995; 8 cells, 1.5e-3 decays by 0.996)
     runs.append(("orbit", "orbit-rho1-cv0.5-dt0.0015",
                  dict(MESH, dt=0.0015, end_time=19.5, write_interval=6.5, virtual_mass=0.5)))
+    runs.append(("orbit", "orbit-rho1-cv0.5-c6-dt0.001",
+                 dict(MESH, cpd=6, dt=0.001, end_time=19.5, write_interval=6.5,
+                      virtual_mass=0.5)))
     # the stability map: 150 steps each
     for cv, rho, dt, extra in ((0, 1, 0.02, {}), (0, 1, 0.0025, {}), (0, 1, 0.001, {}),
                                (0, 1, 0.0007, {}),
@@ -137,6 +140,9 @@ def summarise(case, kw):
     c = jeffery.crossings(t, phi, math.pi)
     if c:
         out["T_pi"] = f"{2 * c[0]:.5f}"           # phi = pi at T/2
+    c = jeffery.crossings(t, phi, 2 * math.pi)
+    if c:
+        out["T_2pi"] = f"{c[0]:.5f}"              # phi = 2 pi at T: one full period
     if "fit" in res and t[-1] > 2:
         out["T_fit"] = f"{res['fit']['T_fit']:.5f}"
         out["r_fit"] = f"{res['fit']['r_eff']:.4f}"
@@ -149,7 +155,7 @@ def do_run(args):
     done = {r["name"] for r in read_csv(csv_path)} if not args.force else set()
     ok = True
     for group, name, kw in campaign(args.quick):
-        if args.group and group not in args.group:
+        if (args.group and group not in args.group) or (args.only and name not in args.only):
             continue
         if name in done and not args.quick:
             print(f"{name}: in {os.path.relpath(csv_path, HERE)}, skipped")
@@ -191,7 +197,7 @@ def do_run(args):
         row["lambda"] = f"{nu * kw['dt'] / h ** 2:.3g}"
         print("  " + ", ".join(f"{k} {row.get(k, '')}" for k in
                                ("status", "growth_per_step", "omega_end", "omega_jeffery_end",
-                                "T_half_pi", "T_pi", "T_fit", "wall_s")), flush=True)
+                                "T_half_pi", "T_pi", "T_2pi", "T_fit", "wall_s")), flush=True)
         if args.quick:
             w, wj = float(row["omega_end"]), float(row["omega_jeffery_end"])
             good = row["status"] == "stable" and w < 0 and abs(w / wj - 1) < 0.1
@@ -241,6 +247,7 @@ def main():
     r.add_argument("--quick", action="store_true")
     r.add_argument("--force", action="store_true")
     r.add_argument("--group", action="append", default=[])
+    r.add_argument("--only", action="append", default=[], help="run only this NAME")
     r.add_argument("--collect", action="store_true",
                    help="only analyse existing run folders (no solver runs)")
     sub.add_parser("plot")

@@ -8,6 +8,7 @@ Period estimates of a run started at phi = 0 (axis along the gradient):
   fit of Jeffery's curve tan(phi) = r' tan(2 pi t/T + theta0) with T, r' and
   theta0 free (t > 1).
 """
+import json
 import math
 import os
 import sys
@@ -40,22 +41,40 @@ def main(results):
     TJ = jeffery.jeffery_period(R)
     md = [f"## Period (r = {R}, Re = gamma a^2/nu = 0.1; Jeffery: T = 2 pi (r + 1/r)/gamma = "
           f"{TJ:.4f})", "",
-          "| run | rho_p/rho_f | virtualMass | dt | cells | T from t(phi = pi/2) | "
-          "T from t(phi = pi) | T fit | r fit | error (pi) | error (fit) | steps | wall [s] | "
-          "CPU [s] |",
+          "T: the time at which phi reaches 2 pi (one full period); T(pi/2), T(pi): 4 and 2 "
+          "times the crossings of pi/2 and pi; T fit, r': Jeffery's curve fitted with T and "
+          "r' free; T_J(r') = 2 pi (r' + 1/r'), Jeffery's period for the fitted aspect ratio.",
+          "",
+          "| run | cells/minor diameter | cells | gamma dt | T(pi/2) | T(pi) | T | error of T | "
+          "T fit | r' | T_J(r') | T / T_J(r') - 1 | steps | CPU [s] |",
           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     orbit_rows = [r for r in rows if r["group"] == "orbit"]
+    metrics = {}
     for r in orbit_rows:
         def fmt(k):
             return f"{float(r[k]):.3f}" if r.get(k) else "-"
-
-        def err(k):
-            return f"{float(r[k]) / TJ - 1:+.1%}" if r.get(k) else "-"
-        md.append(f"| {r['name']} | {r['density_ratio']} | {r['virtualMass']} | {r['dt']} | "
-                  f"{r['cells']} | "
-                  f"{fmt('T_half_pi')} | {fmt('T_pi')} | {fmt('T_fit')} | {r.get('r_fit') or '-'} | "
-                  f"{err('T_pi')} | {err('T_fit')} | {r['steps']} | {r['wall_s']} | {r['cpu_s']} |")
+        T = float(r["T_2pi"]) if r.get("T_2pi") else None
+        tj_fit = 2 * math.pi * (float(r["r_fit"]) + 1 / float(r["r_fit"])) if r.get("r_fit") else None
+        md.append(f"| {r['name']} | {r['cpd']} | {r['cells']} | {r['dt']} | "
+                  f"{fmt('T_half_pi')} | {fmt('T_pi')} | {fmt('T_2pi')} | "
+                  + (f"{100 * (T / TJ - 1):+.2f} %" if T else "-") + " | "
+                  f"{fmt('T_fit')} | {r.get('r_fit') or '-'} | "
+                  + (f"{tj_fit:.3f} | " if tj_fit else "- | ")
+                  + (f"{100 * (T / tj_fit - 1):+.2f} %" if T and tj_fit else "-")
+                  + f" | {r['steps']} | {r['cpu_s']} |")
+        if T:
+            metrics["period_error_pct"] = max(metrics.get("period_error_pct", 0.0),
+                                              round(abs(100 * (T / TJ - 1)), 3))
+            metrics[f"period_error_pct_c{r['cpd']}"] = round(100 * (T / TJ - 1), 3)
+            if tj_fit:
+                metrics[f"period_error_fitted_r_pct_c{r['cpd']}"] = round(100 * (T / tj_fit - 1), 3)
+            periods = float(r["end_time"]) / T
+            metrics["periods_simulated"] = round(min(metrics.get("periods_simulated", periods),
+                                                     periods), 3)
     md.append("")
+    with open(os.path.join(results, "metrics.json"), "w") as fh:
+        json.dump(metrics, fh, indent=1, sort_keys=True)
+        fh.write("\n")
     rates = {}
     for r in rows:
         if r["group"] == "rates":

@@ -99,6 +99,44 @@ void Foam::bodyIntegrator::checkOverlaps
 }
 
 
+void Foam::bodyIntegrator::setHydrodynamicAccelerations
+(
+    immersedBody& body,
+    const collision::BodyState& end,
+    const scalar dt,
+    const vector& FcMean,
+    const vector& TcMean
+)
+{
+    using immersedSpheroids::toCore;
+    using immersedSpheroids::toFoam;
+
+    if (!body.motion().moves())
+    {
+        return;
+    }
+    // the step's velocity change without the collision force's: the
+    // virtual-mass term of the next step (coupledBodySet::advance)
+    const bodyState& start = body.state();
+    vector a = (toFoam(end.velocity) - start.velocity)/dt;
+    vector alpha = (toFoam(end.angularVelocity) - start.angularVelocity)/dt;
+    if (body.motion().isFreeInTranslation())
+    {
+        a -= FcMean/body.mass();
+    }
+    if (body.motion().isFreeInRotation())
+    {
+        alpha -=
+            toFoam
+            (
+                collision::inverseWorldInertia(end.orientation, toCore(body.bodyInertia()))
+            )
+          & TcMean;
+    }
+    body.setAccelerations(a, alpha);
+}
+
+
 void Foam::bodyIntegrator::advance
 (
     PtrList<immersedBody>& bodies,
@@ -146,6 +184,7 @@ void Foam::bodyIntegrator::advance
 
     forAll(bodies, i)
     {
+        setHydrodynamicAccelerations(bodies[i], states[i], dt, FcMean[i], TcMean[i]);
         bodies[i].state() = toFoam(states[i]);
     }
     if (colliding)

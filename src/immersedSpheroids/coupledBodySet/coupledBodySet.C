@@ -106,8 +106,10 @@ void Foam::coupledBodySet::advance
 
     // the virtual mass: C_v rho_f V plus the fluid outside the body that the
     // last step's forcing held to it (both lagged in the explicit force),
-    // implicit on the left, with the last sub-step's accelerations on the
-    // right; the collision force acts on the body's own mass and inertia
+    // implicit on the left, with the last fluid step's hydrodynamic
+    // accelerations on the right (held over the sub-steps like the force, so
+    // that sub-stepping does not iterate the lag away); the collision force
+    // acts on the body's own mass and inertia
     const scalar beta = virtualMass_*fluidDensity_/body.density();
     const scalar m = body.mass();
     const scalar addedMass = beta*m + body.heldMass();
@@ -138,42 +140,6 @@ void Foam::coupledBodySet::advance
         J + addedInertia
     );
     s = toCore(state);
-}
-
-
-void Foam::coupledBodySet::accept
-(
-    std::size_t i,
-    const collision::BodyState& start,
-    const collision::BodyState& end,
-    collision::Scalar dt,
-    const collision::Vec3& fc,
-    const collision::Vec3& tc
-)
-{
-    immersedBody& body = bodies_[i];
-    if (!body.motion().moves())
-    {
-        return;
-    }
-    // the hydrodynamic accelerations (without the collision force's)
-    vector a = (toFoam(end.velocity) - toFoam(start.velocity))/dt;
-    vector alpha =
-        (toFoam(end.angularVelocity) - toFoam(start.angularVelocity))/dt;
-    if (body.motion().isFreeInTranslation())
-    {
-        a -= toFoam(fc)/body.mass();
-    }
-    if (body.motion().isFreeInRotation())
-    {
-        alpha -=
-            toFoam
-            (
-                collision::inverseWorldInertia(end.orientation, toCore(body.bodyInertia()))
-            )
-          & toFoam(tc);
-    }
-    body.setAccelerations(a, alpha);
 }
 
 

@@ -78,6 +78,21 @@ def spheroid_tables(rows, metrics):
                     round(cl / lift, 4)
     if worst is not None:
         metrics[f"spheroid_max_abs_error_pct_{HEADLINE_CPD}"] = round(worst, 3)
+    # the shape of the angle dependence, from the runs alone: C_D(45) against
+    # (C_D0 + C_D90)/2 (the sin^2 law of Zastawny's form, a0 = 2) and |C_L(45)| against
+    # (C_D90 - C_D0)/2 (the linear-resistance lift)
+    for re in sorted({r["Re"] for r in rows if r["shape"] == "prolate"}):
+        by = {r["incidence"]: r for r in rows if r["shape"] == "prolate" and r["Re"] == re
+              and r["cpd"] == HEADLINE_CPD}
+        if all(k in by for k in (0, 45, 90)):
+            c0, c45, c90 = by[0]["C_D"], by[45]["C_D"], by[90]["C_D"]
+            sin2 = pct(c45, 0.5 * (c0 + c90))
+            lift = pct(by[45]["C_L"], 0.5 * (c90 - c0))
+            metrics[f"spheroid_sin2_law_error_pct_Re{re:g}_{HEADLINE_CPD}"] = round(sin2, 3)
+            md += ["", f"Re {re:g}, the runs' own angle dependence: C_D(45) = {c45:.4f} against "
+                   f"(C_D0 + C_D90)/2 = {0.5 * (c0 + c90):.4f} ({sin2:+.2f} %: the sin^2 law of "
+                   f"Zastawny's form holds); |C_L(45)| = {by[45]['C_L']:.4f} against "
+                   f"(C_D90 - C_D0)/2 = {0.5 * (c90 - c0):.4f} ({lift:+.2f} %)."]
     r0, r90 = ref.zastawny_stokes_check()
     k0, k90 = ref.stokes_prolate_k(2.5)
     metrics["zastawny_over_exact_stokes_0"] = round(r0, 4)

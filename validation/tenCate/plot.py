@@ -31,6 +31,7 @@ REFERENCE = {        # u_max (m/s), physics-references.md section 1; data files
     "E1": (0.035986, "Re1_5"),
     "E4": (0.12224, "Re32_2"),
 }
+FLUID_DENSITY = {"E1": 970.0, "E4": 960.0}
 
 
 def load_reference(name):
@@ -45,8 +46,38 @@ def load_run(path):
         t = np.asarray(f["time"][:], dtype=float)
         z = np.asarray(f["centre"][:, 0, 2], dtype=float)
         w = np.asarray(f["velocity"][:, 0, 2], dtype=float)
+        fh = np.asarray(f["hydroForce"][:, 0, 2], dtype=float)
+        fc = np.asarray(f["collisionForce"][:, 0, 2], dtype=float)
     rows = read_csv(path[:-3] + ".csv")    # cells, ranks, wall time, steps; optional
-    return t, z, w, rows[0] if rows else {}
+    return t, z, w, fh, fc, rows[0] if rows else {}
+
+
+def landing(t, z, w, fh, rho_f):
+    """The landing, from the first touch (gap <= 0) on: the largest downward hydrodynamic
+    force over the buoyant weight, the largest overlap (in d) and the largest upward speed
+    (over u_max)."""
+    touch = np.flatnonzero(z - D / 2 <= 0)
+    if not len(touch):
+        return None
+    after = slice(touch[0], None)
+    weight = (1120.0 - rho_f) * 9.81 * np.pi * D ** 3 / 6
+    return dict(push=float(-fh[after].min() / weight), overlap=float(-(z[after] - D / 2).min() / D),
+                rebound=float(max(w[after].max(), 0.0) / -w.min()))
+
+
+def gap_from_velocity(gap_ref, u_ref, gap0):
+    """The gap implied by the data's own velocity curve: gap0 at t = 0 (the sphere released
+    from rest) minus the integral of |u| / d. The digitised gap and velocity curves are two
+    records of one trajectory; where this curve and the gap curve differ, no trajectory can
+    match both, and that difference bounds how well a gap error can be judged."""
+    t = np.concatenate([[0.0], u_ref[:, 0]])
+    u = np.concatenate([[0.0], u_ref[:, 1]])
+    order = np.argsort(t)
+    t, u = t[order], u[order]
+    fine = np.linspace(0.0, t[-1], 4000)
+    uf = np.interp(fine, t, u)
+    travelled = np.concatenate([[0.0], np.cumsum(0.5 * (uf[1:] + uf[:-1]) * np.diff(fine))]) / D
+    return fine, gap0 + travelled
 
 
 def main():
@@ -58,7 +89,8 @@ def main():
     for path in runs:
         tag = os.path.basename(path)[:-3]
         name, cpd = tag.split("-")
-        t, z, w, info = load_run(path)
+        t, z, w, fh, fc, info = load_run(path)
+        land = landing(t, z, w, fh, FLUID_DENSITY[name])
         gap_ref, u_ref = load_reference(name)
         # the floor is a collision wall (lubricationContact): the comparison runs
         # to the end of the data; "contact" marks runs in which the sphere touched
@@ -86,16 +118,29 @@ def main():
         max_gap_far = np.max(np.abs(gap_sim[far_g] - gap_ref[far_g, 1]))
         start_offset = np.interp(0.0, gap_ref[:, 0], gap_ref[:, 1]) - gap[0]
         max_gap_far_shifted = np.max(np.abs(gap_sim[far_g] + start_offset - gap_ref[far_g, 1]))
+        # the data against themselves: the gap curve against the integral of the velocity
+        # curve (both from the data's start gap), and the run against that integral over the
+        # approach (the case's start gap, 8 d)
+        gap0_ref = np.interp(0.0, gap_ref[:, 0], gap_ref[:, 1])
+        t_int, gap_int = gap_from_velocity(gap_ref, u_ref, gap0_ref)
+        within = gap_ref[:, 0] <= t_int[-1]
+        data_inconsistency = np.max(np.abs(gap_ref[within, 1] - np.interp(gap_ref[within, 0], t_int, gap_int)))
+        approach = (t_int <= t[-1]) & (gap_int - gap0_ref + gap[0] > 1.0)
+        gap_sim_int = np.interp(t_int[approach], t, (z - D / 2) / D)
+        max_gap_vs_u = np.max(np.abs(gap_sim_int - (gap_int[approach] - gap0_ref + gap[0])))
         rows.append(dict(case=name, cpd=int(cpd), cells=info.get("cells", ""), ranks=info.get("ranks", ""),
                          steps=info.get("steps", ""), wallSeconds=info.get("wallSeconds", ""),
                          umax=umax, umaxRef=uref, umaxError=(umax - uref) / uref,
                          rmsUError=rms_u, maxGapError=max_gap, endTime=t[-1],
                          rmsUErrorApproach=rms_u_far, maxGapErrorApproach=max_gap_far,
                          startOffset=start_offset, maxGapErrorApproachShifted=max_gap_far_shifted,
+                         dataInconsistency=data_inconsistency, maxGapErrorVsVelocityData=max_gap_vs_u,
+                         landing=land,
                          contact=bool(len(closed))))
         if name not in figs:
             fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
             ax[0].plot(gap_ref[:, 0], gap_ref[:, 1], "ko", ms=3, label="ten Cate et al. 2002")
+            ax[0].plot(t_int, gap_int, "k--", lw=1, label="the data's velocity curve, integrated")
             ax[1].plot(u_ref[:, 0], u_ref[:, 1], "ko", ms=3, label="ten Cate et al. 2002")
             figs[name] = (fig, ax)
         fig, ax = figs[name]
@@ -103,6 +148,7 @@ def main():
         ax[1].plot(t, w, label=f"{cpd} cells/D")
     for name, (fig, ax) in figs.items():
         ax[0].set_xlabel("t (s)"); ax[0].set_ylabel("gap / d")
+        ax[0].set_ylim(bottom=-0.3)
         ax[1].set_xlabel("t (s)"); ax[1].set_ylabel("u_z (m/s)")
         ax[0].legend(); ax[1].legend()
         fig.suptitle(f"ten Cate settling sphere, case {name}")
@@ -113,15 +159,18 @@ def main():
     with open(os.path.join(here, "results", "summary.md"), "w") as f:
         f.write("| case | cells/D | cells | ranks | steps | wall (s) | u_max (m/s) | ref. | u_max error "
                 "| rms u error / u_max | max gap error / d | compared up to t (s) "
-                "| rms u error, gap > 1 d | max gap error, gap > 1 d | the same, start offset removed |"
-                "\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
+                "| rms u error, gap > 1 d | max gap error, gap > 1 d | the same, start offset removed "
+                "| max gap error against the data's integrated velocity, gap > 1 d "
+                "| the data's gap curve against their integrated velocity |"
+                "\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
         for r in rows:
             f.write(f"| {r['case']} | {r['cpd']} | {r['cells']} | {r['ranks']} | {r['steps']} | {r['wallSeconds']} "
                     f"| {r['umax']:.5f} | {r['umaxRef']:.5f} | {100 * r['umaxError']:+.1f} % "
                     f"| {100 * r['rmsUError']:.1f} % | {r['maxGapError']:.3f} | {r['endTime']:.3f}"
                     f"{' (contact)' if r['contact'] else ''} "
                     f"| {100 * r['rmsUErrorApproach']:.1f} % | {r['maxGapErrorApproach']:.3f} "
-                    f"| {r['maxGapErrorApproachShifted']:.3f} ({r['startOffset']:+.3f}) |\n")
+                    f"| {r['maxGapErrorApproachShifted']:.3f} ({r['startOffset']:+.3f}) "
+                    f"| {r['maxGapErrorVsVelocityData']:.3f} | {r['dataInconsistency']:.3f} |\n")
     metrics = {}
     for r in rows:
         key = f"{r['case']}_{r['cpd']}"
@@ -130,6 +179,12 @@ def main():
         metrics[f"{key}_max_gap_error_d"] = round(float(r["maxGapError"]), 5)
         metrics[f"{key}_rms_u_error_pct_approach"] = round(100 * r["rmsUErrorApproach"], 4)
         metrics[f"{key}_max_gap_error_d_approach"] = round(float(r["maxGapErrorApproach"]), 5)
+        metrics[f"{key}_max_gap_error_d_vs_integrated_velocity"] = round(float(r["maxGapErrorVsVelocityData"]), 5)
+        metrics[f"{r['case']}_data_gap_vs_integrated_velocity_d"] = round(float(r["dataInconsistency"]), 5)
+        if r["landing"]:
+            metrics[f"{key}_landing_push_over_weight"] = round(r["landing"]["push"], 3)
+            metrics[f"{key}_landing_max_overlap_d"] = round(r["landing"]["overlap"], 5)
+            metrics[f"{key}_landing_rebound_over_umax"] = round(r["landing"]["rebound"], 4)
     with open(os.path.join(here, "results", "metrics.json"), "w") as f:
         json.dump(metrics, f, indent=1, sort_keys=True)
         f.write("\n")

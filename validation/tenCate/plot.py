@@ -32,6 +32,8 @@ REFERENCE = {        # u_max (m/s), physics-references.md section 1; data files
     "E4": (0.12224, "Re32_2"),
 }
 FLUID_DENSITY = {"E1": 970.0, "E4": 960.0}
+DEFAULT_FORCING = "surfaceCorrected"
+COST_TARGET_PCT = 2.0   # the u_max error whose cost is compared between the forcings
 
 
 def load_reference(name):
@@ -88,7 +90,8 @@ def main():
     figs = {}
     for path in runs:
         tag = os.path.basename(path)[:-3]
-        name, cpd = tag.split("-")
+        name, cpd, *rest = tag.split("-")       # <case>-<cpd>[-<forcing>]
+        forcing = rest[0] if rest else DEFAULT_FORCING
         t, z, w, fh, fc, info = load_run(path)
         land = landing(t, z, w, fh, FLUID_DENSITY[name])
         gap_ref, u_ref = load_reference(name)
@@ -128,14 +131,17 @@ def main():
         approach = (t_int <= t[-1]) & (gap_int - gap0_ref + gap[0] > 1.0)
         gap_sim_int = np.interp(t_int[approach], t, (z - D / 2) / D)
         max_gap_vs_u = np.max(np.abs(gap_sim_int - (gap_int[approach] - gap0_ref + gap[0])))
-        rows.append(dict(case=name, cpd=int(cpd), cells=info.get("cells", ""), ranks=info.get("ranks", ""),
+        rows.append(dict(case=name, cpd=int(cpd), forcing=forcing, cells=info.get("cells", ""),
+                         ranks=info.get("ranks", ""),
                          steps=info.get("steps", ""), wallSeconds=info.get("wallSeconds", ""),
                          umax=umax, umaxRef=uref, umaxError=(umax - uref) / uref,
                          rmsUError=rms_u, maxGapError=max_gap, endTime=t[-1],
                          rmsUErrorApproach=rms_u_far, maxGapErrorApproach=max_gap_far,
                          startOffset=start_offset, maxGapErrorApproachShifted=max_gap_far_shifted,
                          dataInconsistency=data_inconsistency, maxGapErrorVsVelocityData=max_gap_vs_u,
-                         landing=land,
+                         landingPushOverWeight=land["push"] if land else "",
+                         landingMaxOverlap=land["overlap"] if land else "",
+                         landingReboundOverUmax=land["rebound"] if land else "",
                          contact=bool(len(closed))))
         if name not in figs:
             fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
@@ -144,8 +150,10 @@ def main():
             ax[1].plot(u_ref[:, 0], u_ref[:, 1], "ko", ms=3, label="ten Cate et al. 2002")
             figs[name] = (fig, ax)
         fig, ax = figs[name]
-        ax[0].plot(t, (z - D / 2) / D, label=f"{cpd} cells/D")
-        ax[1].plot(t, w, label=f"{cpd} cells/D")
+        style = "-" if forcing == DEFAULT_FORCING else ":"
+        label = f"{cpd} cells/D" + ("" if forcing == DEFAULT_FORCING else f", {forcing}")
+        ax[0].plot(t, (z - D / 2) / D, style, label=label)
+        ax[1].plot(t, w, style, label=label)
     for name, (fig, ax) in figs.items():
         ax[0].set_xlabel("t (s)"); ax[0].set_ylabel("gap / d")
         ax[0].set_ylim(bottom=-0.3)
@@ -154,17 +162,17 @@ def main():
         fig.suptitle(f"ten Cate settling sphere, case {name}")
         fig.tight_layout()
         fig.savefig(os.path.join(here, f"tenCate_{name}.png"), dpi=110)
-    rows.sort(key=lambda r: (r["case"], r["cpd"]))
+    rows.sort(key=lambda r: (r["case"], r["forcing"] != DEFAULT_FORCING, r["forcing"], r["cpd"]))
     write_csv(os.path.join(here, "results", "summary.csv"), rows)
     with open(os.path.join(here, "results", "summary.md"), "w") as f:
-        f.write("| case | cells/D | cells | ranks | steps | wall (s) | u_max (m/s) | ref. | u_max error "
+        f.write("| case | forcing | cells/D | cells | ranks | steps | wall (s) | u_max (m/s) | ref. | u_max error "
                 "| rms u error / u_max | max gap error / d | compared up to t (s) "
                 "| rms u error, gap > 1 d | max gap error, gap > 1 d | the same, start offset removed "
                 "| max gap error against the data's integrated velocity, gap > 1 d "
                 "| the data's gap curve against their integrated velocity |"
-                "\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
+                "\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
         for r in rows:
-            f.write(f"| {r['case']} | {r['cpd']} | {r['cells']} | {r['ranks']} | {r['steps']} | {r['wallSeconds']} "
+            f.write(f"| {r['case']} | {r['forcing']} | {r['cpd']} | {r['cells']} | {r['ranks']} | {r['steps']} | {r['wallSeconds']} "
                     f"| {r['umax']:.5f} | {r['umaxRef']:.5f} | {100 * r['umaxError']:+.1f} % "
                     f"| {100 * r['rmsUError']:.1f} % | {r['maxGapError']:.3f} | {r['endTime']:.3f}"
                     f"{' (contact)' if r['contact'] else ''} "
@@ -173,7 +181,7 @@ def main():
                     f"| {r['maxGapErrorVsVelocityData']:.3f} | {r['dataInconsistency']:.3f} |\n")
     metrics = {}
     for r in rows:
-        key = f"{r['case']}_{r['cpd']}"
+        key = f"{r['case']}_{r['cpd']}" + ("" if r["forcing"] == DEFAULT_FORCING else f"_{r['forcing']}")
         metrics[f"{key}_umax_error_pct"] = round(100 * r["umaxError"], 4)
         metrics[f"{key}_rms_u_error_pct"] = round(100 * r["rmsUError"], 4)
         metrics[f"{key}_max_gap_error_d"] = round(float(r["maxGapError"]), 5)
@@ -181,14 +189,49 @@ def main():
         metrics[f"{key}_max_gap_error_d_approach"] = round(float(r["maxGapErrorApproach"]), 5)
         metrics[f"{key}_max_gap_error_d_vs_integrated_velocity"] = round(float(r["maxGapErrorVsVelocityData"]), 5)
         metrics[f"{r['case']}_data_gap_vs_integrated_velocity_d"] = round(float(r["dataInconsistency"]), 5)
-        if r["landing"]:
-            metrics[f"{key}_landing_push_over_weight"] = round(r["landing"]["push"], 3)
-            metrics[f"{key}_landing_max_overlap_d"] = round(r["landing"]["overlap"], 5)
-            metrics[f"{key}_landing_rebound_over_umax"] = round(r["landing"]["rebound"], 4)
+        if r["landingPushOverWeight"] != "":
+            metrics[f"{key}_landing_push_over_weight"] = round(r["landingPushOverWeight"], 3)
+            metrics[f"{key}_landing_max_overlap_d"] = round(r["landingMaxOverlap"], 5)
+            metrics[f"{key}_landing_rebound_over_umax"] = round(r["landingReboundOverUmax"], 4)
+    metrics.update(cost_of_target(rows, os.path.join(here, "results", "cost.md")))
     with open(os.path.join(here, "results", "metrics.json"), "w") as f:
         json.dump(metrics, f, indent=1, sort_keys=True)
         f.write("\n")
     print(open(os.path.join(here, "results", "summary.md")).read())
+
+
+def cost_of_target(rows, path):
+    """The cost of u_max within COST_TARGET_PCT of the data with each forcing: the coarsest
+    run from which every finer run of the same case and forcing is within it. Cost: cells,
+    steps and core-seconds (wall time x ranks; the runs shared the machine, so upper bounds).
+    Writes the table to path; returns its metrics."""
+    metrics = {}
+    lines = [f"| case | forcing | cells/D run | u_max error at them | coarsest within {COST_TARGET_PCT:g} % "
+             "| cells | steps | core-seconds |", "|---|---|---|---|---|---|---|---|"]
+    for case in sorted({r["case"] for r in rows}):
+        for forcing in sorted({r["forcing"] for r in rows if r["case"] == case}):
+            runs = sorted((r for r in rows if r["case"] == case and r["forcing"] == forcing),
+                          key=lambda r: r["cpd"])
+            within = [abs(100 * r["umaxError"]) <= COST_TARGET_PCT for r in runs]
+            first = next((k for k in range(len(runs)) if all(within[k:])), None)
+            errors = ", ".join(f"{100 * r['umaxError']:+.1f} %" for r in runs)
+            cpds = "/".join(str(r["cpd"]) for r in runs)
+            key = f"{case}_{forcing}_umax_{COST_TARGET_PCT:g}pct"
+            if first is None:
+                lines.append(f"| {case} | {forcing} | {cpds} | {errors} | not reached | | | |")
+                metrics[f"{key}_cpd"] = None
+                continue
+            r = runs[first]
+            core_s = float(r["wallSeconds"]) * float(r["ranks"]) if r["wallSeconds"] != "" else None
+            core_text = f"{core_s:.0f}" if core_s is not None else ""
+            lines.append(f"| {case} | {forcing} | {cpds} | {errors} | {r['cpd']} | {r['cells']} | {r['steps']} "
+                         f"| {core_text} |")
+            metrics[f"{key}_cpd"] = r["cpd"]
+            metrics[f"{key}_cells"] = int(r["cells"]) if r["cells"] != "" else None
+            metrics[f"{key}_core_seconds"] = core_s
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    return metrics
 
 
 if __name__ == "__main__":

@@ -1,5 +1,5 @@
 """Helpers shared by the tutorials' summarise.py scripts: read a case entry, the solver's time
-from its log, and write the results.md table.
+from its log, and write the results.md table (write_results, the only writer of that file).
 
 etc/bashrc puts applications/utilities/plotBodies on PYTHONPATH, so `from caseSummary import ...`
 works in the project's environment. Standard library only.
@@ -36,8 +36,29 @@ def solver_time_row(case, log="log.immersedSpheroidFoam"):
 
 
 def write_results(case, rows):
-    """results.md: a two-column Markdown table of (quantity, value) rows; also printed."""
+    """results.md: a two-column Markdown table of (quantity, value) rows; also printed.
+
+    The one writer of results.md. Each quantity is one row: a list that names one twice, or a
+    cell that would break the table (a '|' or a line break), ends the script with a message
+    instead. The table goes to a temporary file that then replaces results.md, so results.md
+    is always one whole table from one call: two runs finishing in the same case, or a write
+    cut short, cannot leave parts of two tables in it."""
+    labels = [a for a, _ in rows]
+    repeated = sorted({a for a in labels if labels.count(a) > 1})
+    if repeated:
+        sys.exit(f"summarise.py: results.md would list these rows more than once: "
+                 f"{'; '.join(repeated)}")
+    broken = [f"{a}: {b}" for a, b in rows if re.search(r"[|\n]", f"{a}{b}")]
+    if broken:
+        sys.exit(f"summarise.py: results.md cells with '|' or a line break: {'; '.join(broken)}")
     lines = ["| quantity | value |", "|---|---|"] + [f"| {a} | {b} |" for a, b in rows]
-    with open(os.path.join(case, "results.md"), "w") as out:
-        out.write("\n".join(lines) + "\n")
+    path = os.path.join(case, "results.md")
+    partial = f"{path}.{os.getpid()}.tmp"
+    try:
+        with open(partial, "w") as out:
+            out.write("\n".join(lines) + "\n")
+        os.replace(partial, path)
+    finally:
+        if os.path.exists(partial):
+            os.remove(partial)
     print("\n".join(lines))

@@ -5,10 +5,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <iomanip>
 #include <iostream>
 #include <optional>
 #include <sstream>
+
+#include <unistd.h>
 
 namespace packing {
 
@@ -245,12 +248,20 @@ class Placement {
     auto lastReport = t0;
     stats_ = RsaStatistics{};
     stats_.bodies = n_;
+    // the progress line of the project's long runs: done/total, seconds, time left (from the
+    // rate so far: an underestimate, as each body takes more attempts than the last); rewritten
+    // in place on a terminal, one line per report otherwise
+    const bool terminal = isatty(fileno(stderr));
     auto report = [&](std::size_t placed, bool final) {
       const double s = std::chrono::duration<double>(Clock::now() - t0).count();
-      std::cerr << "randomSequentialAddition: " << placed << " / " << n_ << " bodies placed (alpha "
-                << std::fixed << std::setprecision(4) << volumeFractionOf(placed, D_, L_) << "), "
-                << stats_.attempts << " attempts, " << std::setprecision(1) << s << " s"
-                << (final ? " (done)" : "") << std::defaultfloat << std::setprecision(6) << "\n";
+      const double left = placed > 0 ? s * double(n_ - placed) / double(placed) : 0;
+      std::cerr << (terminal ? "\r" : "") << "packSpheroids: " << placed << "/" << n_
+                << " bodies (alpha " << std::fixed << std::setprecision(4)
+                << volumeFractionOf(placed, D_, L_) << "), " << stats_.attempts << " attempts, "
+                << std::setprecision(0) << s << " s";
+      if (!final) std::cerr << ", about " << left << " s left";
+      std::cerr << (terminal && !final ? "      " : "\n") << std::defaultfloat << std::setprecision(6)
+                << std::flush;
     };
 
     std::mt19937_64 engine(o_.seed);
@@ -284,7 +295,7 @@ class Placement {
       stats_.maxAttemptsForOneBody = std::max(stats_.maxAttemptsForOneBody, attempt);
       if (o_.progress) {
         const auto now = Clock::now();
-        if (now - lastReport >= std::chrono::seconds(1)) {
+        if (now - lastReport >= std::chrono::seconds(terminal ? 1 : 10)) {
           lastReport = now;
           report(k + 1, false);
         }

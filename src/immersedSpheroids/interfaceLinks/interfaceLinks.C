@@ -97,9 +97,15 @@ Foam::interfaceLinks::interfaceLinks
 
     if (acrossCentres_.size())
     {
+        // the tree needs a box of non-zero width in every direction: the
+        // centres across one processor patch lie in one plane. Grown by a
+        // fraction of its size and of its distance from the origin (an
+        // absolute tolerance is lost in the coordinates' rounding).
         treeBoundBox bb(acrossCentres_);
-        bb.min() -= point::uniform(ROOTVSMALL);
-        bb.max() += point::uniform(ROOTVSMALL);
+        const scalar grow =
+            1e-6*(mag(bb.span()) + mag(bb.min()) + mag(bb.max())) + VSMALL;
+        bb.min() -= point::uniform(grow);
+        bb.max() += point::uniform(grow);
         acrossTree_.reset
         (
             new indexedOctree<treeDataPoint>

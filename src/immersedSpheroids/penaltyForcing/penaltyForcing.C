@@ -78,6 +78,7 @@ Foam::penaltyForcing::penaltyForcing
     cellSlot_(mesh.nCells(), -1),
     inside_(mesh.nCells(), 0),
     solid_(mesh.nCells(), false),
+    termBody_(mesh.nCells(), -1),
     cellCoeff_(mesh.nCells(), 0),
     cellAlpha_(mesh.nCells(), 0),
     cellHeld_(mesh.nCells(), 0),
@@ -241,6 +242,7 @@ void Foam::penaltyForcing::addSurfaceCorrectedTerms
         links_->append(body, solid_, wallCell_, maxCoeff, maxWallCoeff, terms_);
         bodyStart_[bodyi + 1] = terms_.size();
     }
+    softenSharedCells(bodies.size(), dt, ddtCoeff);
 
     for (const immersedBody& body : bodies)
     {
@@ -249,6 +251,52 @@ void Foam::penaltyForcing::addSurfaceCorrectedTerms
             inside_[celli] = 0;
             solid_[celli] = false;
         }
+    }
+}
+
+
+void Foam::penaltyForcing::softenSharedCells
+(
+    const label nBodies,
+    const scalar dt,
+    const scalar ddtCoeff
+)
+{
+    // A cell with the terms of two bodies (the fluid between two surfaces
+    // less than about a cell apart, or a cell inside both) couples them
+    // directly: its velocity is a weighted mean of the two, and the force
+    // on each is its coefficient times their velocity difference. The body
+    // update is explicit in that force; with a coefficient of 1/eta it
+    // exceeds the bodies' inertia by about rho_f V_cell/(m eta) and the
+    // relative motion of the pair grows step by step. There the terms are
+    // capped at the fluid's own rate c/dt (direct forcing: the velocity is
+    // imposed over about a step), as in the soft wall cells: the target
+    // velocity of each term is kept, its strength is bounded.
+    if (nBodies < 2)
+    {
+        return;
+    }
+    for (label bodyi = 0; bodyi < nBodies; ++bodyi)
+    {
+        for (const penaltyTerm& term : bodyTerms(bodyi))
+        {
+            label& owner = termBody_[term.cell];
+            owner = owner == -1 || owner == bodyi ? bodyi : -2;
+        }
+    }
+    const scalar maxSharedCoeff = ddtCoeff/dt;
+    for (penaltyTerm& term : terms_)
+    {
+        if (termBody_[term.cell] == -2 && term.coeff > maxSharedCoeff)
+        {
+            const scalar scale = maxSharedCoeff/term.coeff;
+            term.coeff *= scale;
+            term.source *= scale;
+        }
+    }
+    for (const penaltyTerm& term : terms_)
+    {
+        termBody_[term.cell] = -1;
     }
 }
 

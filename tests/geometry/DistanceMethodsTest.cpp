@@ -1,4 +1,4 @@
-// Properties every robust method must have (Moving Balls, GJK, dual, auto),
+// Properties every robust method must have (Moving Balls, GJK, dual, auto, paper),
 // run for each of them: closed forms, invariances, agreement, extremes.
 #include "ellipsoids/CertifiedBracket.hpp"
 #include "ellipsoids/DistanceMethod.hpp"
@@ -206,7 +206,7 @@ TEST_P(RobustMethod, IterationLimitIsReportedNotHidden) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, RobustMethod,
-                         ::testing::Values("movingBalls", "gjk", "dual", "auto"), paramName);
+                         ::testing::Values("movingBalls", "gjk", "dual", "auto", "paper"), paramName);
 
 TEST(DistanceMethods, FactoryListsAndRejectsNames) {
   for (const auto& name : distanceMethodNames()) {

@@ -333,6 +333,11 @@ TEST(DualNewtonBatch, SameAnswersAsOneAtATime) {
     overlapping += one.status == DistanceStatus::overlapping;
   }
   EXPECT_GT(overlapping, 20);
-  // empty batch
-  dual.distances(pairs.data(), 0, o, batch.data());
+  // an empty batch reads no pair and writes no result
+  DistanceResult untouched;
+  untouched.distance = 12345;
+  std::vector<DistanceResult> sentinel(3, untouched);
+  dual.distances(nullptr, 0, o, sentinel.data());
+  dual.distances(pairs.data(), 0, o, sentinel.data());
+  for (const DistanceResult& r : sentinel) EXPECT_EQ(r.distance, 12345);
 }

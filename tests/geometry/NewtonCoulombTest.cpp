@@ -155,9 +155,7 @@ TEST(NewtonCoulomb, MirrorCaseMeetsEpsD) {
       EXPECT_LE(r.lower, dStar);
       EXPECT_GE(r.upper, dStar);
       EXPECT_EQ(r.status, DistanceStatus::converged);
-      if (r.status == DistanceStatus::converged) {
-        EXPECT_LE(std::abs(r.distance - dStar), o.epsD);
-      }
+      EXPECT_LE(std::abs(r.distance - dStar), o.epsD);
       EXPECT_GT(r.iterations, 0);
       EXPECT_LT(r.iterations, 1000);
     }
@@ -199,7 +197,14 @@ TEST(NewtonCoulomb, OverlappingPairsReturnZero) {
     EXPECT_EQ(r.status, DistanceStatus::overlapping);
     EXPECT_EQ(r.distance, 0);
     EXPECT_EQ(r.lower, 0);
-    EXPECT_EQ(r.upper, 0);
+    // [0, 0] needs a certain common point; the exactly touching spheres have
+    // none (their only common point is on both surfaces): [0, rounding]
+    if (&c == &cases[1]) {
+      EXPECT_GT(r.upper, 0);
+      EXPECT_LE(r.upper, 1e-13);
+    } else {
+      EXPECT_EQ(r.upper, 0);
+    }
     EXPECT_EQ(r.iterations, 0);
     EXPECT_TRUE(r.point1.allFinite() && r.point2.allFinite());
   }
@@ -222,13 +227,11 @@ TEST(NewtonCoulomb, HardCaseTerminatesWithCertifiedBracket) {
       o.stopRule = rule;
       const DistanceResult r = nc.distance(t2.e1, t2.e2, o);
       EXPECT_TRUE(finiteResult(r));
-      EXPECT_NE(r.status, DistanceStatus::overlapping);  // the pair is separated
-      EXPECT_LE(r.iterations, NewtonCoulomb::kDefaultMaxIterations);
+      EXPECT_EQ(r.status, DistanceStatus::converged);  // 522-529 iterations measured
+      EXPECT_LT(r.iterations, 1000);
       EXPECT_LE(r.lower, ref.distance + 1e-12);
       EXPECT_GE(r.upper, ref.distance - 1e-12);
-      if (r.status == DistanceStatus::converged) {
-        EXPECT_LE(std::abs(r.distance - ref.distance), o.epsD);
-      }
+      EXPECT_LE(std::abs(r.distance - ref.distance), o.epsD);
     }
   }
   // A tight iteration limit ends with maxIterations, the last iterate and a valid bracket.

@@ -1,5 +1,6 @@
 #include "PairTable.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -14,6 +15,12 @@ std::string trim(const std::string& s) {
   if (b == std::string::npos) return "";
   const auto e = s.find_last_not_of(" \t\r");
   return s.substr(b, e - b + 1);
+}
+
+std::string number(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
 }
 
 std::vector<std::string> split(const std::string& line) {
@@ -79,6 +86,8 @@ std::vector<Pair> read(std::istream& in, const std::string& source) {
                          "' is not a finite number");
       }
     }
+    using Range = ellipsoids::SupportedRange;
+    const std::string lengths = "[" + number(Range::kMinLength) + ", " + number(Range::kMaxLength) + "]";
     for (int body = 0; body < 2; ++body) {
       const int o = 10 * body;
       for (int k = 0; k < 3; ++k) {
@@ -86,6 +95,23 @@ std::vector<Pair> read(std::istream& in, const std::string& source) {
           throw InputError(where + ": semi-axis " + columns()[o + k] + " = " + fields[o + k] +
                            " must be > 0");
         }
+        if (!(v[o + k] >= Range::kMinLength && v[o + k] <= Range::kMaxLength)) {
+          throw InputError(where + ": semi-axis " + columns()[o + k] + " = " + fields[o + k] +
+                           " must be in " + lengths + " (the range the geometry core supports)");
+        }
+        if (!(std::abs(v[o + 3 + k]) <= Range::kMaxLength)) {
+          throw InputError(where + ": centre " + columns()[o + 3 + k] + " = " + fields[o + 3 + k] +
+                           " must be at most " + number(Range::kMaxLength) + " in magnitude");
+        }
+      }
+      const double longest = std::max({v[o], v[o + 1], v[o + 2]});
+      const double shortest = std::min({v[o], v[o + 1], v[o + 2]});
+      if (!(longest <= Range::kMaxElongation * (1 + 1e-12) * shortest)) {
+        throw InputError(where + ": semi-axes (" + columns()[o] + "," + columns()[o + 1] + "," +
+                         columns()[o + 2] + ") = (" + fields[o] + "," + fields[o + 1] + "," +
+                         fields[o + 2] + "): the largest over the smallest must be at most " +
+                         number(Range::kMaxElongation) + " (aspect ratio 1/" +
+                         number(Range::kMaxElongation) + " to " + number(Range::kMaxElongation) + ")");
       }
       const double qn = std::sqrt(v[o + 6] * v[o + 6] + v[o + 7] * v[o + 7] +
                                   v[o + 8] * v[o + 8] + v[o + 9] * v[o + 9]);

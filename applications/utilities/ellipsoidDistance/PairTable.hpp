@@ -38,8 +38,9 @@ const std::vector<std::string>& columns();
  * silently.
  * @param source name used in messages (file path or "standard input")
  * @throws InputError on a bad header, a malformed row (wrong number of fields,
- *         a field that is not a finite number), a non-positive semi-axis or a
- *         quaternion farther than 1e-6 from unit norm
+ *         a field that is not a finite number), a semi-axis, centre or
+ *         elongation outside ellipsoids::SupportedRange, or a quaternion
+ *         farther than 1e-6 from unit norm
  */
 std::vector<Pair> read(std::istream& in, const std::string& source);
 

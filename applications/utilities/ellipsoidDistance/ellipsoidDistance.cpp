@@ -35,12 +35,16 @@ Minimal distance between ellipsoid pairs, one pair a CSV row with the header
 
 Options:
   -method NAME     movingBalls | gjk | newtonCoulomb | exteriorPenalty | jain |
-                   dual | auto | all                              (default auto)
+                   dual | auto | paper | all                      (default auto)
+                   auto: the measured table (dual); paper: the founding
+                   paper's choice, Moving Balls for 1/3 < Ar < 3, GJK
+                   otherwise (both certified, with a fallback method)
   -eps E           absolute tolerance on the distance
   -epsRel E        tolerance as a fraction of the smaller equal-volume radius
                    of each pair (not with -eps)                   (default 1e-5)
   -stop RULE       paper | certified: stopping test of movingBalls,
-                   newtonCoulomb and jain (auto is always certified) (default paper)
+                   newtonCoulomb and jain (auto and paper are always
+                   certified)                                     (default paper)
   -adaptiveEpsTheta  eps_theta from the local curvature (eq. F.6) in movingBalls
   -maxIter N       iteration limit (default: each method's own)
   -Cmax X          newtonCoulomb C_max                            (default 0.01)
@@ -53,17 +57,24 @@ Options:
   -o FILE          write the result CSV to FILE (default standard output)
   -help            this text
 
+Supported bodies (the geometry core's range): semi-axes in [1e-35, 1e35],
+largest/smallest semi-axis at most 100, centre coordinates at most 1e35 in
+magnitude.
+
 Output CSV, a row per pair and method:
   row,method,status,distance,lower,upper,iterations,p1x,p1y,p1z,p2x,p2y,p2z,overlap
 row: 1-based data row of the input; status: converged | overlapping |
 max-iterations | failed; [lower, upper]: certified bracket of the distance;
 distance is signed for the dual method (minus the penetration depth when the
 bodies overlap); overlap: Jia et al.'s test (separated | touching | overlapping).
+
+Exit status: 0 done; 1 bad options or input (a message on standard error
+names the option, or the row and column) or an error while computing.
 )";
 
 [[noreturn]] void usageError(const std::string& message) {
   std::cerr << "ellipsoidDistance: " << message << "\n(ellipsoidDistance -help for the options)\n";
-  std::exit(2);
+  std::exit(1);
 }
 
 double number(const std::string& option, const std::string& text, bool positive) {
@@ -204,13 +215,24 @@ int main(int argc, char** argv) {
   for (const auto& p : pairs) {
     DistanceOptions o = base;
     o.epsD = eps > 0 ? eps : epsRel * std::min(p.e1.equivalentRadius(), p.e2.equivalentRadius());
-    const char* overlap = toString(jia->test(p.e1, p.e2));
-    for (const auto& m : methods) {
-      const DistanceResult r = m->distance(p.e1, p.e2, o);
-      out << p.row << ',' << m->name() << ',' << toString(r.status) << ',' << r.distance << ','
-          << r.lower << ',' << r.upper << ',' << r.iterations << ',' << r.point1.x() << ','
-          << r.point1.y() << ',' << r.point1.z() << ',' << r.point2.x() << ',' << r.point2.y()
-          << ',' << r.point2.z() << ',' << overlap << '\n';
+    std::string method;
+    try {
+      const char* overlap = toString(jia->test(p.e1, p.e2));
+      for (const auto& m : methods) {
+        method = m->name();
+        o.validate();
+        const DistanceResult r = m->distance(p.e1, p.e2, o);
+        out << p.row << ',' << m->name() << ',' << toString(r.status) << ',' << r.distance << ','
+            << r.lower << ',' << r.upper << ',' << r.iterations << ',' << r.point1.x() << ','
+            << r.point1.y() << ',' << r.point1.z() << ',' << r.point2.x() << ',' << r.point2.y()
+            << ',' << r.point2.z() << ',' << overlap << '\n';
+      }
+    } catch (const std::exception& e) {
+      // e.g. -epsRel times a tiny body's radius rounding to 0 (DistanceOptions::validate);
+      // whatever it is, a message and exit status 1, never an abort
+      std::cerr << "ellipsoidDistance: row " << p.row << (method.empty() ? "" : ", method " + method)
+                << ": " << e.what() << "\n";
+      return 1;
     }
   }
   if (!out) {

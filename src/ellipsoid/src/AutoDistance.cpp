@@ -1,9 +1,5 @@
 #include "ellipsoids/AutoDistance.hpp"
 
-#include "ellipsoids/DualNewton.hpp"
-#include "ellipsoids/Gjk.hpp"
-#include "ellipsoids/MovingBalls.hpp"
-
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
@@ -26,21 +22,35 @@ std::vector<AutoDistance::Rule> AutoDistance::paperTable() {
   return {{3 * (1 - 1e-12), inf, "movingBalls"}, {inf, inf, "gjk"}};
 }
 
+namespace {
+const std::vector<std::string> kAutoFallback = {"dual", "gjk", "movingBalls"};
+const std::vector<std::string> kPaperFallback = {"gjk", "movingBalls"};
+
+/// The methods of a table row or fallback chain: any single method, not auto or paper.
+std::unique_ptr<DistanceMethod> makeMember(const std::string& method, const char* where) {
+  if (method == "auto" || method == "paper") {
+    throw std::invalid_argument(std::string("AutoDistance: ") + where + " cannot name '" + method + "'");
+  }
+  return makeDistanceMethod(method);  // throws on unknown names
+}
+}  // namespace
+
 AutoDistance::AutoDistance() : AutoDistance(defaultTable()) {}
 
-AutoDistance::AutoDistance(const std::vector<Rule>& table) : table_(table) {
+AutoDistance::AutoDistance(const std::vector<Rule>& table) : AutoDistance(table, "auto", kAutoFallback) {}
+
+AutoDistance::AutoDistance(const std::vector<Rule>& table, const std::string& name,
+                           const std::vector<std::string>& fallback)
+    : name_(name), table_(table) {
   if (table_.empty()) {
     throw std::invalid_argument("AutoDistance: the method table is empty");
   }
-  for (const Rule& r : table_) {
-    if (r.method == "auto") {
-      throw std::invalid_argument("AutoDistance: a table row cannot name 'auto'");
-    }
-    tableMethods_.push_back(makeDistanceMethod(r.method));  // throws on unknown names
-  }
-  fallback_.push_back(std::make_unique<DualNewton>());
-  fallback_.push_back(std::make_unique<Gjk>());
-  fallback_.push_back(std::make_unique<MovingBalls>());
+  for (const Rule& r : table_) tableMethods_.push_back(makeMember(r.method, "a table row"));
+  for (const std::string& m : fallback) fallback_.push_back(makeMember(m, "the fallback chain"));
+}
+
+std::unique_ptr<AutoDistance> AutoDistance::paper() {
+  return std::make_unique<AutoDistance>(paperTable(), "paper", kPaperFallback);
 }
 
 const DistanceMethod& AutoDistance::choose(const Ellipsoid& e1, const Ellipsoid& e2,
@@ -65,11 +75,12 @@ DistanceResult AutoDistance::distance(const Ellipsoid& e1, const Ellipsoid& e2,
     return r.status == DistanceStatus::overlapping ||
            (r.status == DistanceStatus::converged && r.bracketWidth() <= options.epsD);
   };
+  // a signed answer (dual) made unsigned; upper stays: 0 only for a certain overlap
   auto unsign = [](DistanceResult r) {
     if (r.status == DistanceStatus::overlapping) {
       r.distance = 0;
       r.lower = 0;
-      r.upper = 0;
+      r.upper = std::max(r.upper, Scalar(0));
     }
     return r;
   };
@@ -91,6 +102,8 @@ DistanceResult AutoDistance::distance(const Ellipsoid& e1, const Ellipsoid& e2,
     if (r.bracketWidth() < best.bracketWidth()) best = r;
   }
   best.iterations = iterations;
+  // no method certified within epsD: the tightest bracket, not a converged answer
+  if (best.status == DistanceStatus::converged) best.status = DistanceStatus::failed;
   return unsign(best);
 }
 

@@ -1,9 +1,10 @@
 #include "ellipsoids/CertifiedBracket.hpp"
 
-#include "ellipsoids/OverlapTest.hpp"
+#include "ellipsoids/DualNewton.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ellipsoids {
 
@@ -15,25 +16,34 @@ struct Bracket {
   Vec3 direction;
 };
 
-// Radial projection that tolerates a point at the centre (then unchanged).
-Vec3 ontoSurface(const Ellipsoid& e, const Vec3& x) {
-  const Vec3 d = x - e.centre();
-  const Scalar q = d.dot(e.quadraticMatrix() * d);
-  return q > 0 && std::isfinite(q) ? Vec3(e.centre() + d / std::sqrt(q)) : x;
+/// |v|_1 >= |v|: a bound of a coordinate magnitude without a square root.
+Scalar norm1(const Vec3& v) { return v.cwiseAbs().sum(); }
+
+/// |D^-1 U^T (x - r)|: 1 on the surface, < 1 inside (body frame, see the header).
+Scalar scaledRadius(const Ellipsoid& e, const Vec3& x) {
+  const Vec3 m = e.rotation().transpose() * (x - e.centre());
+  return m.cwiseQuotient(e.semiAxes()).norm();
+}
+
+/// A point of e near x: x if the body-frame test puts it inside, else its radial projection.
+Vec3 intoBody(const Ellipsoid& e, const Vec3& x) {
+  const Scalar s = scaledRadius(e, x);
+  return s > 1 && std::isfinite(s) ? Vec3(e.centre() + (x - e.centre()) / s) : x;
 }
 
 Bracket bracketFromPoints(const Ellipsoid& e1, const Ellipsoid& e2, const Vec3& x1in,
-                          const Vec3& x2in) {
-  const Vec3 x1 = ontoSurface(e1, x1in);
-  const Vec3 x2 = ontoSurface(e2, x2in);
+                          const Vec3& x2in, Scalar distance) {
+  const Vec3 x1 = intoBody(e1, x1in);
+  const Vec3 x2 = intoBody(e2, x2in);
   const Vec3 d = x2 - x1;
   const Scalar allow = roundingAllowance(e1, e2);
 
   Bracket b;
   // U from absolute coordinates: their rounding is relative to |x|, not to the pair's size
-  b.upper = d.norm() + allow + 4 * kEps * (x1.norm() + x2.norm());
+  b.upper = d.norm() + allow + 4 * kEps * (norm1(x1) + norm1(x2));
   Scalar best = -std::numeric_limits<Scalar>::infinity();
   Vec3 bestN = e2.centre() - e1.centre();
+  // any unit n gives a valid L(n); these are the ones near the optimum for good points
   const Vec3 candidates[3] = {d, e1.gradient(x1), -e2.gradient(x2)};
   for (const Vec3& c : candidates) {
     const Scalar norm = c.norm();
@@ -54,36 +64,58 @@ Bracket bracketFromPoints(const Ellipsoid& e1, const Ellipsoid& e2, const Vec3& 
   }
   b.lower = std::max(best - allow, Scalar(0));  // unsigned distance is >= 0
   b.direction = bestN;
+  // the method's own distance inside its bracket (both bounds stay valid)
+  b.lower = std::min(b.lower, distance);
+  b.upper = std::max(b.upper, distance);
   return b;
 }
 
 }  // namespace
 
+Scalar bodyFrameSupportRadius(const Ellipsoid& e, const Vec3& unitN) {
+  return (e.rotation().transpose() * unitN).cwiseProduct(e.semiAxes()).norm();
+}
+
 Scalar separatingPlaneBound(const Ellipsoid& e1, const Ellipsoid& e2, const Vec3& unitN) {
-  return unitN.dot(e2.centre() - e1.centre()) - e1.supportRadius(unitN) - e2.supportRadius(unitN);
+  return unitN.dot(e2.centre() - e1.centre()) - bodyFrameSupportRadius(e1, unitN) -
+         bodyFrameSupportRadius(e2, unitN);
 }
 
 Scalar roundingAllowance(const Ellipsoid& e1, const Ellipsoid& e2) {
-  return 32 * kEps *
-         ((e2.centre() - e1.centre()).norm() + e1.maxSemiAxis() + e2.maxSemiAxis());
+  return roundingAllowance(e1, e2, (e2.centre() - e1.centre()).norm());
+}
+
+
+bool certainlyInside(const Ellipsoid& e, const Vec3& x) {
+  // rounding of the scaled body-frame coordinates: x - r, the rotation by the
+  // rounded U^T (and U's own distance from the exact rotation), over a_min
+  const Scalar delta = 32 * kEps * (norm1(x) + norm1(e.centre())) / e.minSemiAxis();
+  const Scalar margin = 4 * delta + 16 * kEps;
+  return scaledRadius(e, x) <= 1 - margin;
 }
 
 void certifyFromPoints(const Ellipsoid& e1, const Ellipsoid& e2, DistanceResult& result) {
   if (result.status == DistanceStatus::overlapping) {
-    // d* = 0 is certain when a point of one body is in the other (e.g. the
-    // crossed centre-segment points) or the exact Jia test says overlapping;
-    // for a pair it calls touching the points bound the gap that may remain
     result.lower = 0;
     const Vec3 mid = Scalar(0.5) * (result.point1 + result.point2);
-    const bool common = e1.levelSet(result.point2) <= 0 || e2.levelSet(result.point1) <= 0 ||
-                        e1.levelSet(e2.centre()) <= 0 || e2.levelSet(e1.centre()) <= 0 ||
-                        (e1.levelSet(mid) <= 0 && e2.levelSet(mid) <= 0);
-    const bool certain = common || JiaOverlapTest().test(e1, e2) == OverlapStatus::overlapping;
-    result.upper = certain ? Scalar(0)
-                           : bracketFromPoints(e1, e2, result.point1, result.point2).upper;
+    const bool common = certainlyInside(e1, result.point2) || certainlyInside(e2, result.point1) ||
+                        certainlyInside(e1, e2.centre()) || certainlyInside(e2, e1.centre()) ||
+                        (certainlyInside(e1, mid) && certainlyInside(e2, mid));
+    if (common) {
+      result.upper = 0;
+      return;
+    }
+    // the signed dual method's points at the overlap's maximum of L are common
+    // points for all but the slightest overlaps (DualNewton: upper = 0 then)
+    DistanceOptions o;
+    o.epsD = 1e-6 * std::min(e1.minSemiAxis(), e2.minSemiAxis());
+    const DistanceResult signedResult = DualNewton().distance(e1, e2, o);
+    result.upper = signedResult.status == DistanceStatus::overlapping && signedResult.upper == 0
+                       ? Scalar(0)
+                       : bracketFromPoints(e1, e2, result.point1, result.point2, 0).upper;
     return;
   }
-  const Bracket b = bracketFromPoints(e1, e2, result.point1, result.point2);
+  const Bracket b = bracketFromPoints(e1, e2, result.point1, result.point2, result.distance);
   result.lower = b.lower;
   result.upper = b.upper;
   result.direction = b.direction;
@@ -91,7 +123,7 @@ void certifyFromPoints(const Ellipsoid& e1, const Ellipsoid& e2, DistanceResult&
 
 Scalar bracketWidthFromPoints(const Ellipsoid& e1, const Ellipsoid& e2, const Vec3& x1,
                               const Vec3& x2) {
-  const Bracket b = bracketFromPoints(e1, e2, x1, x2);
+  const Bracket b = bracketFromPoints(e1, e2, x1, x2, (x2 - x1).norm());
   return b.upper - b.lower;
 }
 

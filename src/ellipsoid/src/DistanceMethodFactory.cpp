@@ -28,7 +28,8 @@ const std::vector<std::pair<std::string, Factory>>& registry() {
       entry<MovingBalls>("movingBalls"),     entry<Gjk>("gjk"),
       entry<NewtonCoulomb>("newtonCoulomb"), entry<ExteriorPenalty>("exteriorPenalty"),
       entry<JainDistance>("jain"),           entry<DualNewton>("dual"),
-      entry<AutoDistance>("auto")};
+      entry<AutoDistance>("auto"),
+      {"paper", [] { return std::unique_ptr<DistanceMethod>(AutoDistance::paper()); }}};
   return methods;
 }
 

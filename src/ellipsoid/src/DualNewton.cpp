@@ -176,7 +176,7 @@ struct PairSetup {
   V3 dr;           // r2 - r1
   Scalar drNorm;
   Scalar size;     // largest semi-axes summed
-  Scalar allow;    // rounding allowance of the bracket (= roundingAllowance(e1, e2))
+  Scalar allow;    // rounding allowance of the bracket (roundingAllowance(e1, e2), with drNorm)
   Scalar roundingL;  // rounding of L = n.dr - s1 - s2
   Scalar epsD, epsStop;
   int maxIterations;
@@ -186,7 +186,7 @@ struct PairSetup {
       : P1(e1.shapeMatrix()), P2(e2.shapeMatrix()), dr(Vec3(e2.centre() - e1.centre())) {
     drNorm = std::sqrt(dot(dr, dr));
     size = e1.maxSemiAxis() + e2.maxSemiAxis();
-    allow = 32 * kEps * (drNorm + size);
+    allow = roundingAllowance(e1, e2, drNorm);
     roundingL = 4 * kEps * (drNorm + size);
     epsD = options.epsD;
     // the reported bracket is gap + 2 allow + the rounding of the absolute
@@ -241,9 +241,9 @@ V3 centreLineNormal(const PairSetup& p) {
 void start(const PairSetup& p, const Ellipsoid& e1, const DistanceOptions& options, DualPoint& cur) {
   if (options.useInitialDirection) {
     cur.evaluate(p.P1, p.P2, p.dr, Vec3(options.initialDirection.normalized()));
-  } else if (p.drNorm > 0 && p.spheres) {
+  } else if (p.drNorm > kEps * p.size && p.spheres) {
     cur.evaluateDirection(p.P1, p.P2, p.dr, p.dr);  // exact: M is isotropic
-  } else if (p.drNorm > 0) {
+  } else if (p.drNorm > kEps * p.size) {
     const V3 m = centreLineNormal(p);
     // a degenerate M (flat bodies to rounding) falls back to the centre line
     if (std::isfinite(m.x + m.y + m.z) && dot(m, p.dr) > 0) {
@@ -252,7 +252,8 @@ void start(const PairSetup& p, const Ellipsoid& e1, const DistanceOptions& optio
       cur.evaluateDirection(p.P1, p.P2, p.dr, p.dr);  // normalised on the way
     }
   } else {
-    cur.evaluate(p.P1, p.P2, p.dr, Vec3(e1.rotation().col(0)));  // concentric: any direction
+    // concentric to rounding (n^T P n along such a short r2 - r1 could underflow): any direction
+    cur.evaluate(p.P1, p.P2, p.dr, Vec3(e1.rotation().col(0)));
   }
 }
 
@@ -393,20 +394,18 @@ DistanceResult finish(const PairSetup& p, const Ellipsoid& e1, const Ellipsoid& 
   res.point2 = e1.centre() + cur.x2(p.dr);
   res.direction = cur.n.eigen();
   if (status == DistanceStatus::overlapping || (status != DistanceStatus::converged && cur.L <= 0)) {
-    // certify the overlap with a common point, else ask the exact algebraic test
-    const bool common = e1.levelSet(res.point2) <= 0 || e2.levelSet(res.point1) <= 0 ||
-                        e1.levelSet(e2.centre()) <= 0 || e2.levelSet(e1.centre()) <= 0;
+    // the overlap is certified by a common point; without one, |x2 - x1| still
+    // bounds the signed distance from above (>= 0 >= d* or, if apart, >= d*)
+    const bool common = certainlyInside(e1, res.point2) || certainlyInside(e2, res.point1) ||
+                        certainlyInside(e1, e2.centre()) || certainlyInside(e2, e1.centre());
     res.distance = cur.L;
     res.lower = cur.L - p.allow;
-    if (common) {
-      res.upper = 0;
-    } else if (JiaOverlapTest().test(e1, e2) != OverlapStatus::separated) {
-      res.upper = p.allow;  // touching or overlapping by the exact test
-    } else {
-      res.status = DistanceStatus::failed;  // a spurious local maximum of L
-      res.upper = (res.point2 - res.point1).norm() + p.allow;
+    res.upper = common ? Scalar(0)
+                       : (res.point2 - res.point1).norm() + p.allow +
+                             4 * kEps * (res.point1.cwiseAbs().sum() + res.point2.cwiseAbs().sum());
+    if (!common && JiaOverlapTest().test(e1, e2) == OverlapStatus::separated) {
+      res.status = DistanceStatus::failed;  // a spurious local maximum of L: not an overlap
     }
-    if (res.status == DistanceStatus::overlapping && res.upper < res.lower) res.upper = res.lower;
     return res;
   }
   res.distance = std::sqrt(dot(cur.v, cur.v));

@@ -16,16 +16,32 @@ std::string str(const Vec3& v) {
   return os.str();
 }
 
+std::string str(Scalar v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
 }  // namespace
 
 Ellipsoid::Ellipsoid(const Vec3& semiAxes, const Vec3& centre, const Quat& orientation)
     : semiAxes_(semiAxes), centre_(centre), orientation_(orientation) {
-  if (!semiAxes.allFinite() || semiAxes.minCoeff() <= 0) {
-    throw std::invalid_argument("Ellipsoid: semi-axes must be finite and > 0, got " +
-                                str(semiAxes));
+  using R = SupportedRange;
+  if (!semiAxes.allFinite() || !(semiAxes.minCoeff() >= R::kMinLength) ||
+      !(semiAxes.maxCoeff() <= R::kMaxLength)) {
+    throw std::invalid_argument("Ellipsoid: semi-axes must be in [" + str(R::kMinLength) + ", " +
+                                str(R::kMaxLength) + "], got " + str(semiAxes));
   }
-  if (!centre.allFinite()) {
-    throw std::invalid_argument("Ellipsoid: centre must be finite, got " + str(centre));
+  // (a relative slack of 1e-12: spheroid(100, ...) computes its semi-axes with cube roots)
+  if (!(semiAxes.maxCoeff() <= R::kMaxElongation * (1 + 1e-12) * semiAxes.minCoeff())) {
+    throw std::invalid_argument(
+        "Ellipsoid: elongation (largest / smallest semi-axis) must be at most " +
+        str(R::kMaxElongation) + " (aspect ratio 1/" + str(R::kMaxElongation) + " to " +
+        str(R::kMaxElongation) + "), got semi-axes " + str(semiAxes));
+  }
+  if (!centre.allFinite() || !(centre.cwiseAbs().maxCoeff() <= R::kMaxLength)) {
+    throw std::invalid_argument("Ellipsoid: centre coordinates must be finite and at most " +
+                                str(R::kMaxLength) + " in magnitude, got " + str(centre));
   }
   const Scalar norm = orientation.norm();
   if (!std::isfinite(norm) || std::abs(norm - 1) > 1e-6) {
@@ -49,6 +65,7 @@ Ellipsoid::Ellipsoid(const Vec3& semiAxes, const Vec3& centre, const Quat& orien
   const Scalar abc = semiAxes_.prod();
   equivalentRadius_ = std::cbrt(abc);
   minGaussianRadius_ = abc / (maxAxis_ * maxAxis_);
+  maxCurvatureRadius_ = maxAxis_ * maxAxis_ / minAxis_;
 
   // aspect ratio: symmetry axis over the other two for a spheroid
   const Scalar a = semiAxes_.x(), b = semiAxes_.y(), c = semiAxes_.z();
@@ -75,6 +92,13 @@ Ellipsoid Ellipsoid::spheroid(Scalar ar, Scalar dEq, const Vec3& centre, const Q
     std::ostringstream os;
     os << "Ellipsoid::spheroid: aspect ratio and diameter must be finite and > 0, got ar = " << ar
        << ", dEq = " << dEq;
+    throw std::invalid_argument(os.str());
+  }
+  const Scalar maxAr = SupportedRange::kMaxElongation * (1 + 1e-12);
+  if (!(ar <= maxAr) || !(ar * maxAr >= 1)) {
+    std::ostringstream os;
+    os << "Ellipsoid::spheroid: aspect ratio must be in [1/" << SupportedRange::kMaxElongation << ", "
+       << SupportedRange::kMaxElongation << "], got ar = " << ar;
     throw std::invalid_argument(os.str());
   }
   const Scalar a = std::cbrt(ar * ar) * dEq / 2;

@@ -21,9 +21,7 @@ std::string describe(const ExteriorPenalty::Parameters& p) {
 }
 
 /// The copy of e translated by -origin (all computations are relative to r1).
-Ellipsoid relativeTo(const Ellipsoid& e, const Vec3& origin) {
-  return Ellipsoid(e.semiAxes(), e.centre() - origin, e.orientation());
-}
+Ellipsoid relativeTo(const Ellipsoid& e, const Vec3& origin) { return e.translatedBy(-origin); }
 
 /// s_m(beta) consistent with the sign of h: h = 0 (the kink) agrees with both signs.
 bool signAgrees(Scalar h, int s) { return h == 0 || (h > 0) == (s > 0); }

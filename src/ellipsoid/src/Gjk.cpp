@@ -175,9 +175,21 @@ DistanceResult Gjk::distance(const Ellipsoid& e1, const Ellipsoid& e2,
   const Mat3& P1 = e1.shapeMatrix();
   const Mat3& P2 = e2.shapeMatrix();
   const Scalar allow = roundingAllowance(e1, e2);
+  // the stopping test leaves room for everything the reported bracket adds to
+  // |v| - mu + 2 allow: the rounding of the absolute points (4 eps (|p1|_1 +
+  // |p2|_1), |p_m|_1 <= |r1|_1 + |dr|_1 + sqrt(3) a_max,m) and the difference
+  // between |v| and |x2 - x1| (a few eps of the simplex's size)
+  const Scalar sizes = e1.maxSemiAxis() + e2.maxSemiAxis();
+  const Scalar stopMargin = 2 * allow +
+                            4 * kEps * (2 * e1.centre().cwiseAbs().sum() + 2 * dr.cwiseAbs().sum() +
+                                        Scalar(1.7320508075688772) * sizes) +
+                            8 * kEps * (dr.norm() + sizes);
 
   Vec3 v = options.useInitialDirection ? Vec3(-options.initialDirection) : Vec3(-dr);
-  if (!(v.squaredNorm() > 0)) v = Vec3::UnitX();
+  // centres closer than the rounding of the sizes (v^T P v could underflow): any direction
+  if (!options.useInitialDirection && !(dr.norm() > kEps * sizes)) {
+    v = Vec3::UnitX();
+  }
 
   Simplex simplex;
   Scalar mu = 0;
@@ -199,13 +211,13 @@ DistanceResult Gjk::distance(const Ellipsoid& e1, const Ellipsoid& e2,
       mu = delta;
       bestN = -v / vnorm;
     }
-    if (haveSimplex && vnorm - mu + 2 * allow <= options.epsD) {
+    if (haveSimplex && vnorm - mu + stopMargin <= options.epsD) {
       res.status = DistanceStatus::converged;
       break;
     }
     if (haveSimplex && simplex.contains(w)) {
       // no new vertex: at the limit of floating point
-      res.status = vnorm - mu + 2 * allow <= options.epsD ? DistanceStatus::converged
+      res.status = vnorm - mu + stopMargin <= options.epsD ? DistanceStatus::converged
                                                           : DistanceStatus::failed;
       break;
     }
@@ -214,7 +226,7 @@ DistanceResult Gjk::distance(const Ellipsoid& e1, const Ellipsoid& e2,
     Vec3 vNew;
     if (!simplex.closest(vNew)) {
       simplex = previous;  // breakdown of the sub-algorithm: keep the last good simplex
-      res.status = haveSimplex && vnorm - mu + 2 * allow <= options.epsD ? DistanceStatus::converged
+      res.status = haveSimplex && vnorm - mu + stopMargin <= options.epsD ? DistanceStatus::converged
                                                                          : DistanceStatus::failed;
       break;
     }
@@ -233,9 +245,11 @@ DistanceResult Gjk::distance(const Ellipsoid& e1, const Ellipsoid& e2,
   res.point1 = e1.centre() + x1;
   res.point2 = e1.centre() + x2;
   if (res.status == DistanceStatus::overlapping) {
+    // [0, 0] with a certain common point (the simplex points coincide up to
+    // rounding), else [0, U] (certifyFromPoints)
     res.distance = 0;
-    res.lower = res.upper = 0;
     res.direction = bestN;
+    certifyFromPoints(e1, e2, res);
     return res;
   }
   res.distance = (x2 - x1).norm();

@@ -14,9 +14,7 @@ namespace ellipsoids {
 namespace {
 
 /// The copy of e translated by -origin (all computations are relative to r1).
-Ellipsoid relativeTo(const Ellipsoid& e, const Vec3& origin) {
-  return Ellipsoid(e.semiAxes(), e.centre() - origin, e.orientation());
-}
+Ellipsoid relativeTo(const Ellipsoid& e, const Vec3& origin) { return e.translatedBy(-origin); }
 
 /// A surface point held in the ellipsoidal coordinates (nu, phi) of its body (eq. 2.68).
 struct SurfacePoint {
@@ -133,7 +131,8 @@ DistanceResult JainDistance::distance(const Ellipsoid& e1, const Ellipsoid& e2,
     x2 = y2;
     bool stop;
     if (options.stopRule == StopRule::certified) {
-      stop = bracketWidthFromPoints(f1, f2, x1, x2) <= options.epsD;
+      // (in absolute coordinates: the reported bracket carries their rounding)
+      stop = bracketWidthFromPoints(e1, e2, origin + x1, origin + x2) <= options.epsD;
     } else {
       // theta_m (eq. 2.3) against eps_theta, App. E
       stop =

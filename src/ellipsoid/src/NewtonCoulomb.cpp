@@ -22,9 +22,7 @@ std::string describe(const NewtonCoulomb::Parameters& p) {
 }
 
 /// The copy of e translated by -origin (all computations are relative to r1).
-Ellipsoid relativeTo(const Ellipsoid& e, const Vec3& origin) {
-  return Ellipsoid(e.semiAxes(), e.centre() - origin, e.orientation());
-}
+Ellipsoid relativeTo(const Ellipsoid& e, const Vec3& origin) { return e.translatedBy(-origin); }
 
 /**
  * First-order projection onto the surface (third and fourth lines of eq. 2.41,
@@ -134,7 +132,8 @@ DistanceResult NewtonCoulomb::distance(const Ellipsoid& e1, const Ellipsoid& e2,
     // Stopping test (Alg. 4 line 8).
     bool stop;
     if (options.stopRule == StopRule::certified) {
-      stop = bracketWidthFromPoints(f1, f2, x1, x2) <= options.epsD;
+      // (in absolute coordinates: the reported bracket carries their rounding)
+      stop = bracketWidthFromPoints(e1, e2, origin + x1, origin + x2) <= options.epsD;
     } else {
       if (k > 0) {
         // eps_theta^k from the local curvature, eq. F.6 (Alg. 4 line 11)

@@ -1,5 +1,7 @@
 #include "ellipsoids/OverlapTest.hpp"
 
+#include "ellipsoids/CertifiedBracket.hpp"
+
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -68,7 +70,24 @@ Vec4 JiaOverlapTest::characteristicPolynomial(const Ellipsoid& e1, const Ellipso
   return Vec4(s1, s2, s3, s4);
 }
 
+bool JiaOverlapTest::provedApart(const Ellipsoid& e1, const Ellipsoid& e2) {
+  // the bounding spheres apart beyond the rounding: |r2 - r1| > a_max,1 + a_max,2
+  const Scalar d = (e2.centre() - e1.centre()).norm();
+  return d - e1.maxSemiAxis() - e2.maxSemiAxis() > roundingAllowance(e1, e2, d);
+}
+
+OverlapStatus JiaOverlapTest::test(const Ellipsoid& e1, const Ellipsoid& e2) const {
+  if (provedApart(e1, e2)) return OverlapStatus::separated;
+  return decide(e1, e2).status;
+}
+
 OverlapDetails JiaOverlapTest::details(const Ellipsoid& e1, const Ellipsoid& e2) const {
+  OverlapDetails out = decide(e1, e2);
+  if (provedApart(e1, e2)) out.status = OverlapStatus::separated;
+  return out;
+}
+
+OverlapDetails JiaOverlapTest::decide(const Ellipsoid& e1, const Ellipsoid& e2) const {
   OverlapDetails out;
   out.coefficients = characteristicPolynomial(e1, e2);
   const Scalar a = out.coefficients[0], b = out.coefficients[1], c = out.coefficients[2],

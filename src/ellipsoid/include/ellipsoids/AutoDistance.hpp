@@ -10,11 +10,14 @@
  * movingBalls), so an auto answer with status converged or overlapping is
  * within the requested tolerance, always; if every method fails the status says so.
  *
- * Unsigned: an overlapping pair gives distance 0, bracket [0, 0], status
- * overlapping (call DualNewton for the penetration depth).
+ * Unsigned: an overlapping pair gives distance 0, status overlapping and the
+ * bracket [0, upper] of the method that answered ([0, 0] when it found a
+ * certain common point; call DualNewton for the penetration depth).
  *
- * The default table is the measured one (docs/benchmarks.md); paperTable()
- * is the founding paper's finding (GJK for Ar <= 1/3 or >= 3, Moving Balls otherwise).
+ * The default table is the measured one (docs/benchmarks.md). paper() is the
+ * founding paper's design under the name "paper": its table (Moving Balls for
+ * 1/3 < Ar < 3, GJK otherwise, paperTable()), its two methods as the fallback
+ * chain, the certified stop as every AutoDistance.
  */
 #ifndef ELLIPSOIDS_AUTODISTANCE_HPP
 #define ELLIPSOIDS_AUTODISTANCE_HPP
@@ -42,11 +45,23 @@ class AutoDistance : public DistanceMethod {
   /// The founding paper's rule: GJK for Ar <= 1/3 or >= 3, Moving Balls otherwise.
   static std::vector<Rule> paperTable();
 
+  /// "auto": the default table, fallback chain dual, gjk, movingBalls.
   AutoDistance();
   /// @throws std::invalid_argument on an empty table or an unknown method name
   explicit AutoDistance(const std::vector<Rule>& table);
+  /**
+   * @param name what name() returns
+   * @param fallback the methods tried, in order, after the table's choice fails
+   * @throws std::invalid_argument on an empty table, an unknown method name, or
+   *         a table row or fallback naming auto or paper
+   */
+  AutoDistance(const std::vector<Rule>& table, const std::string& name,
+               const std::vector<std::string>& fallback);
 
-  std::string name() const override { return "auto"; }
+  /// The founding paper's design, named "paper" (see the file comment).
+  static std::unique_ptr<AutoDistance> paper();
+
+  std::string name() const override { return name_; }
   DistanceResult distance(const Ellipsoid& e1, const Ellipsoid& e2,
                           const DistanceOptions& options) const override;
 
@@ -54,6 +69,7 @@ class AutoDistance : public DistanceMethod {
   const DistanceMethod& choose(const Ellipsoid& e1, const Ellipsoid& e2, Scalar epsD) const;
 
  private:
+  std::string name_;
   std::vector<Rule> table_;
   std::vector<std::unique_ptr<DistanceMethod>> tableMethods_;  // one per row
   std::vector<std::unique_ptr<DistanceMethod>> fallback_;

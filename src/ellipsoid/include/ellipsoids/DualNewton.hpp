@@ -17,10 +17,17 @@
  * magnitude is the penetration depth (the shortest translation that separates
  * the bodies) and n the direction to separate them. distance is then that
  * negative maximum, status overlapping, lower = L(n) (certified) and
- * upper = 0 once a common point of the bodies is found (x2(n) in E1 or
- * x1(n) in E2). Overlap reported without a common point is checked with the
- * Jia et al. test; if it disagrees, the status is failed (callers then use
+ * upper = 0 once a common point of the bodies is certain (x2(n) in E1, x1(n)
+ * in E2 or a centre in the other body, certainlyInside). Without one (an
+ * overlap below the rounding of that test) upper = |x2 - x1|, which bounds the
+ * signed distance whatever the sign. If then the Jia et al. test says
+ * separated, the status is failed (a spurious maximum; callers then use
  * another method, as auto does).
+ *
+ * Rounding: the iteration uses the stored world-frame shape matrices; the
+ * bracket is widened by roundingAllowance (CertifiedBracket.hpp), which grows
+ * with the elongation of the bodies for that reason. Bodies whose centres are
+ * closer than eps times their size start from any direction (concentric).
  */
 #ifndef ELLIPSOIDS_DUALNEWTON_HPP
 #define ELLIPSOIDS_DUALNEWTON_HPP

@@ -38,19 +38,50 @@ struct LineIntersection {
   Scalar tExit = 0;          ///< larger root
 };
 
+/**
+ * The bodies the geometry core supports, checked by the Ellipsoid constructor:
+ * - every semi-axis in [kMinLength, kMaxLength];
+ * - elongation (largest / smallest semi-axis) at most kMaxElongation, i.e.
+ *   spheroids of aspect ratio 1/100 to 100;
+ * - every centre coordinate at most kMaxLength in magnitude.
+ * Why these bounds: the methods form products of up to six lengths (GJK's
+ * sub-determinants) and ratios of up to four (Jia's polynomial, the shape
+ * matrices times squared centre distances); within these bounds none leaves
+ * the normal range of double (1e-307 .. 1e308), whatever the two bodies of a
+ * pair. The rounding allowance of the certified bracket grows with the
+ * elongation (CertifiedBracket.hpp); tests/geometry/ExtremeRangeTest.cpp checks
+ * the bracket against a long-double reference over this whole range.
+ */
+struct SupportedRange {
+  static constexpr Scalar kMinLength = 1e-35;
+  static constexpr Scalar kMaxLength = 1e35;
+  static constexpr Scalar kMaxElongation = 100;
+};
+
 class Ellipsoid {
  public:
   /**
-   * @param semiAxes (a, b, c), each finite and > 0
-   * @param centre   finite centre r
+   * @param semiAxes (a, b, c), each in [kMinLength, kMaxLength] with
+   *        max/min <= kMaxElongation (SupportedRange)
+   * @param centre   coordinates of magnitude <= kMaxLength
    * @param orientation quaternion; normalised if its norm is within 1e-6 of 1
-   * @throws std::invalid_argument on a non-positive or non-finite semi-axis, a
-   *         non-finite centre, or a quaternion farther than 1e-6 from unit norm
+   * @throws std::invalid_argument naming the parameter and its allowed values
+   *         on a semi-axis, elongation or centre outside SupportedRange (or not
+   *         finite), or a quaternion farther than 1e-6 from unit norm
    */
   Ellipsoid(const Vec3& semiAxes, const Vec3& centre, const Quat& orientation);
 
   /// Sphere of radius r at centre.
   static Ellipsoid sphere(Scalar radius, const Vec3& centre);
+
+  /// The same body moved by shift, its precomputed matrices reused. The new
+  /// centre is not checked: the methods use it for coordinates relative to the
+  /// other body's centre, up to twice kMaxLength.
+  Ellipsoid translatedBy(const Vec3& shift) const {
+    Ellipsoid moved(*this);
+    moved.centre_ += shift;
+    return moved;
+  }
 
   /**
    * Spheroid of aspect ratio ar = (symmetry semi-axis)/(other semi-axes) and
@@ -88,8 +119,9 @@ class Ellipsoid {
   /// max/min semi-axis (>= 1): how far from a sphere, whatever the kind.
   Scalar elongation() const { return maxAxis_ / minAxis_; }
 
-  /// max over the surface of R_max: (largest semi-axis)^2 / (smallest).
-  Scalar maxOfMaxCurvatureRadius() const { return maxAxis_ * maxAxis_ / minAxis_; }
+  /// max over the surface of R_max: (largest semi-axis)^2 / (smallest) = elongation x largest
+  /// semi-axis (also the scale of the rounding of the world-frame shape matrix, CertifiedBracket.hpp).
+  Scalar maxOfMaxCurvatureRadius() const { return maxCurvatureRadius_; }
   /// min over the surface of R_min: (smallest semi-axis)^2 / (largest).
   Scalar minOfMinCurvatureRadius() const { return minAxis_ * minAxis_ / maxAxis_; }
   /// min over the surface of the Gaussian radius R_G: min_i (abc / a_i^2), reached at a vertex.
@@ -147,6 +179,7 @@ class Ellipsoid {
   Scalar equivalentRadius_;
   Scalar aspectRatio_;
   Scalar minGaussianRadius_;
+  Scalar maxCurvatureRadius_;
 };
 
 }  // namespace ellipsoids

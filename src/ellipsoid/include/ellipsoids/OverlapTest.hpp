@@ -29,6 +29,24 @@
  *   |gap| = 1e-10: 99.9 % separated/overlapping;
  *   |gap| >= 1e-9: 100 % separated/overlapping;
  * a separated pair is never reported overlapping nor the reverse.
+ *
+ * Far-apart pairs. The coefficients of a pair far apart relative to its sizes
+ * are differences of terms of order (|r2 - r1| / b1)^2 and more: with unit
+ * spheres 1e8 apart every digit cancels and the decision is noise. A pair
+ * whose centres are farther apart than the sum of the largest semi-axes (plus
+ * the rounding allowance of CertifiedBracket.hpp) is therefore separated
+ * without the polynomial; the polynomial decides only for pairs within that
+ * distance, where |r| <= (a_max,1 + a_max,2) / a_min,1.
+ *
+ * Bodies of very different sizes. A small body near a large one's surface
+ * makes one root of P smaller than the rounding of the others by the square of
+ * the size ratio: measured with a body placed +-1e-3 of the larger body's size
+ * from its surface (tests/geometry/OverlapTestTest.cpp, BodiesOfDifferentSizes),
+ * the decision is right for size ratios up to 1e6 and wrong for a quarter of
+ * the pairs at 1e8.
+ *
+ * The answer is an algebraic decision in floating point, not a certificate:
+ * the certified brackets (CertifiedBracket.hpp) never rely on it.
  */
 #ifndef ELLIPSOIDS_OVERLAPTEST_HPP
 #define ELLIPSOIDS_OVERLAPTEST_HPP
@@ -56,9 +74,8 @@ class JiaOverlapTest {
 
   explicit JiaOverlapTest(Scalar zeroTolerance = kDefaultZeroTolerance);
 
-  OverlapStatus test(const Ellipsoid& e1, const Ellipsoid& e2) const {
-    return details(e1, e2).status;
-  }
+  /// separated when the bounding spheres are apart (provedApart), else Jia et al.'s decision
+  OverlapStatus test(const Ellipsoid& e1, const Ellipsoid& e2) const;
 
   /// The test with every intermediate quantity (for diagnostics and tests).
   OverlapDetails details(const Ellipsoid& e1, const Ellipsoid& e2) const;
@@ -66,7 +83,13 @@ class JiaOverlapTest {
   /// Coefficients (a, b, c, d) of the monic characteristic polynomial P.
   static Vec4 characteristicPolynomial(const Ellipsoid& e1, const Ellipsoid& e2);
 
+  /// |r2 - r1| - a_max,1 - a_max,2 exceeds roundingAllowance(e1, e2): apart for certain.
+  static bool provedApart(const Ellipsoid& e1, const Ellipsoid& e2);
+
  private:
+  /// Jia et al.'s decision from the polynomial alone.
+  OverlapDetails decide(const Ellipsoid& e1, const Ellipsoid& e2) const;
+
   Scalar zeroTolerance_;
 };
 

@@ -47,6 +47,19 @@ void CollisionSettings::validate() const {
           outOfRangeMessage("distanceAccuracy", distanceAccuracy, kDistanceAccuracyRange));
   require(kMaxSubStepsRange.contains(maxSubSteps),
           outOfRangeMessage("maxSubSteps", maxSubSteps, kMaxSubStepsRange));
+  const std::vector<std::string>& names = distanceMethods();
+  if (std::find(names.begin(), names.end(), distanceMethod) == names.end()) {
+    std::string allowed;
+    for (const std::string& m : names) allowed += (allowed.empty() ? "" : ", ") + m;
+    require(false, "distanceMethod = " + distanceMethod + " must be one of " + allowed);
+  }
+}
+
+const std::vector<std::string>& CollisionSettings::distanceMethods() {
+  // the methods that certify their answer within eps_d on every pair they
+  // accept (Newton-Coulomb, exterior penalty and Jain et al. do not)
+  static const std::vector<std::string> names = {"dual", "paper", "auto", "gjk", "movingBalls"};
+  return names;
 }
 
 CollisionModel::CollisionModel(const CollisionSettings& settings,
@@ -60,6 +73,7 @@ CollisionModel::CollisionModel(const CollisionSettings& settings,
       walls_(std::move(walls)) {
   require(pair_ && wall_, "a collision model needs a pair model and a wall model");
   settings_.validate();
+  distance_ = ellipsoids::makeDistanceMethod(settings_.distanceMethod);
   for (const PlaneWall& w : walls_) w.validate();
 }
 
@@ -215,14 +229,22 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
     }
     ellipsoids::DistanceOptions options;
     options.epsD = settings_.distanceAccuracy * std::min(e1.minGaussianRadius(), e2.minGaussianRadius());
+    options.stopRule = ellipsoids::StopRule::certified;  // Moving Balls: the bracket, not eps_theta
     const auto warm = direction_.find(key(i, j));
     if (warm != direction_.end()) {
       options.useInitialDirection = true;
       options.initialDirection = warm->second;
     }
-    ellipsoids::DistanceResult r = dual_.distance(e1, e2, options);
+    ellipsoids::DistanceResult r = distance_->distance(e1, e2, options);
     ++statistics_.distanceQueries;
     statistics_.distanceIterations += r.iterations;
+    if (!distance_->isSigned() && (r.status == ellipsoids::DistanceStatus::overlapping || !(r.lower > 0))) {
+      // an unsigned method's overlap (distance 0), or a bracket down to 0 (a pair
+      // that may overlap by up to eps_d): the sign, depth and direction from the signed dual
+      r = dual_.distance(e1, e2, options);
+      ++statistics_.distanceQueries;
+      statistics_.distanceIterations += r.iterations;
+    }
     if (r.status == ellipsoids::DistanceStatus::maxIterations ||
         r.status == ellipsoids::DistanceStatus::failed) {
       ++statistics_.distanceNotConverged;

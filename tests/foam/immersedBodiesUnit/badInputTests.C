@@ -231,6 +231,20 @@ void immersedBodiesTests::testBadInput(const Time& runTime, const fvMesh& mesh)
         {"'pairModel'", "hertz", "springDashpot, lubricatedSpringDashpot", fname},
         "unknown pair model lists the allowed models"
     );
+    // a distance method that cannot serve (it does not certify eps_d)
+    expectFatalIOError
+    (
+        construct
+        (
+            "collision { type contact; distanceMethod newtonCoulomb; }"
+            " filmStabilisation no; " + withBody(goodBody)
+        ),
+        {
+            "'distanceMethod'", "newtonCoulomb",
+            "dual, paper, auto, gjk, movingBalls", fname
+        },
+        "unknown distance method lists the allowed methods"
+    );
     expectFatalIOError
     (
         construct

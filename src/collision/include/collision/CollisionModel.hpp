@@ -8,9 +8,12 @@
  *  2. prefilter: axis-aligned boxes of the bodies grown by their reach (the
  *     pair model's lubrication and the film gap), then the Jia et al.
  *     overlap test on the grown bodies;
- *  3. the signed distance of the dual method to eps_d = distanceAccuracy x
- *     the pair's smallest Gaussian curvature radius, warm-started from the
- *     pair's previous direction;
+ *  3. the distance by the method distanceMethod names (default the signed
+ *     dual method) to eps_d = distanceAccuracy x the pair's smallest Gaussian
+ *     curvature radius, certified stop, warm-started from the pair's previous
+ *     direction where the method can; a pair an unsigned method finds
+ *     overlapping, or whose bracket reaches down to 0, gets its sign and
+ *     penetration depth from the signed dual method;
  *  4. the pair model (PairModel: normal contact, friction) on each pair in
  *     contact; its lubrication law and the film correction (FilmCorrection,
  *     if given) recorded as damped pairs, applied implicitly by dampingForces();
@@ -27,6 +30,7 @@
  * | subStepsPerContact | body sub-steps per contact time               | 10      | [4, 10000] |
  * | distanceAccuracy   | eps_d / smallest Gaussian curvature radius    | 1e-5    | [1e-12, 0.1] |
  * | maxSubSteps        | bound on the sub-steps subSteps() may ask for | 100000  | [1, 1e9] |
+ * | distanceMethod     | distance method of step 3 (distanceMethods()) | dual    | dual, paper, auto, gjk, movingBalls |
  *
  * See also: PairModel, WallModel, FilmCorrection, SubStepper.
  */
@@ -65,6 +69,13 @@ struct CollisionSettings {
   /// largest number of sub-steps subSteps() may ask for, an integer in kMaxSubStepsRange
   int maxSubSteps = 100000;
   static constexpr Range kMaxSubStepsRange{1, 1e9};
+  /// the distance method of each pair, one of distanceMethods(): dual (signed),
+  /// paper (the founding paper's: Moving Balls for 1/3 < Ar < 3, GJK otherwise),
+  /// auto, or a single method that can serve (certified stop): gjk, movingBalls
+  std::string distanceMethod = "dual";
+
+  /// the names distanceMethod accepts, the default first
+  static const std::vector<std::string>& distanceMethods();
 
   /// @throws std::invalid_argument naming the parameter and its allowed range
   void validate() const;
@@ -281,6 +292,9 @@ class CollisionModel {
   std::unique_ptr<FilmCorrection> film_;
   std::vector<PlaneWall> walls_;
   PairSearch search_;
+  /// the settings' distanceMethod
+  std::unique_ptr<ellipsoids::DistanceMethod> distance_;
+  /// the penetration depth of overlapping pairs, whatever distance_ is
   ellipsoids::DualNewton dual_;
   ellipsoids::AutoDistance fallback_;
   ellipsoids::JiaOverlapTest overlap_;

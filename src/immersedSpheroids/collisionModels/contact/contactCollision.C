@@ -46,8 +46,8 @@ bool lubricated(const word& model)
     return model == "lubricatedSpringDashpot";
 }
 
-//- Read a model name (pairModel, wallModel) and check it against the names
-//  the core's factory builds
+//- Read a name (pairModel, wallModel, distanceMethod) and check it against
+//  the names the core accepts
 word readModelName
 (
     const dictionary& dict,
@@ -127,7 +127,7 @@ Foam::collisionModels::contact::contact
     ({
         "type", "walls", "restitution", "friction", "contactSteps",
         "subStepsPerContact", "maxOverlap", "distanceAccuracy", "maxSubSteps",
-        "pairModel", "wallModel"
+        "distanceMethod", "pairModel", "wallModel"
     });
     if (lubrication)
     {
@@ -188,6 +188,11 @@ Foam::collisionModels::contact::contact
             "the largest number of body sub-steps per fluid step"
         )
     );
+    s.distanceMethod = readModelName
+    (
+        dict, "distanceMethod", word(defaults.distanceMethod),
+        Settings::distanceMethods()
+    );
     if (lubrication)
     {
         p.lubrication.saturation = readOptionalInRange<scalar>
@@ -242,7 +247,8 @@ Foam::collisionModels::contact::contact
         << ", e " << p.contact.restitution << ", friction "
         << p.contact.friction << ", T_c = " << contactSteps_ << " deltaT, "
         << s.subStepsPerContact << " sub-steps per contact, max overlap "
-        << s.maxOverlap << " a_min, eps_d " << s.distanceAccuracy << " R_G";
+        << s.maxOverlap << " a_min, eps_d " << s.distanceAccuracy << " R_G"
+        << " (distance method " << s.distanceMethod.c_str() << ")";
     if (lubrication)
     {
         Info<< ", lubrication: mu " << p.viscosity << ", activation "
@@ -331,8 +337,23 @@ void Foam::collisionModels::contact::checkOverlaps
     const bool restarted
 )
 {
-    const std::vector<collision::CollisionBody> collisionBodies =
-        bodies.collisionBodies(states);
+    // the shapes once, body by body: one outside the collision core's range
+    // (ellipsoids::SupportedRange: semi-axes, elongation) stops the run here
+    std::vector<collision::CollisionBody> collisionBodies;
+    for (std::size_t i = 0; i < states.size(); ++i)
+    {
+        try
+        {
+            collisionBodies.push_back(bodies.collisionBody(i, states[i]));
+        }
+        catch (const std::invalid_argument& err)
+        {
+            FatalErrorInFunction
+                << "Body '" << bodies.name(i).c_str() << "' is outside the"
+                << " shapes the collision core supports: " << err.what()
+                << nl << exit(FatalError);
+        }
+    }
     const scalar cap = model_->settings().maxOverlap;
     const scalar allowed = restarted ? 2*cap : cap;
     const std::vector<collision::CollisionModel::Overlap> found =

@@ -34,7 +34,10 @@
  *               of a call (forces, history bookkeeping) is the call minus these stages;
  *   naive       the peer: all N(N-1)/2 pairs tested with the same bounding spheres, then
  *               ellipsoids::DualNewton (cold, same accuracy) for every overlapping pair, no
- *               prefilter and no forces (only the distances); its two phases timed apart.
+ *               prefilter and no forces (only the distances); its two phases timed apart;
+ *   paper       CollisionModel::forces with distanceMethod paper (the founding paper's
+ *               choice: Moving Balls for 1/3 < Ar < 3, GJK otherwise, certified stop;
+ *               overlaps from the dual), warm and cold as above, on its own two models.
  * The replicas are checked against the model's own statistics (same candidate pairs, same
  * prefilter rejections, same distance queries) on every round: a mismatch stops the run with
  * a message.
@@ -109,7 +112,9 @@ equal-volume spheroids (D_eq = 1) at volume fraction 0.25, Ar in
 cold (history cleared before each call) and warm (bodies moved by 1e-3 D_eq
 and rotated by 1e-3 rad since the previous call), against a naive peer (all
 pairs with bounding spheres, then a cold dual-Newton distance for every
-overlapping pair) measured in the same run. See docs/collisionCost.md.
+overlapping pair) measured in the same run, and the same calls with
+distanceMethod paper (the founding paper's Moving Balls / GJK choice) in the
+same rounds. See docs/collisionCost.md.
 
 Table mode:
   --table FILE     write one CSV row per (Ar, mode) with the medians, ratios,
@@ -494,6 +499,7 @@ struct Timings {
   std::vector<double> setup, search, prefilter, distancesCold, distancesWarm, restCold, restWarm;
   std::vector<double> spheres, naiveDistances, perQueryCold, perQueryWarm, perQueryNaive;
   std::vector<double> damping;  ///< dampingForces after the warm call (lubricationContact)
+  std::vector<double> paperWarm, paperCold;  ///< forces() with distanceMethod paper
 };
 
 /// Sums over the timed rounds.
@@ -501,6 +507,7 @@ struct Counts {
   long candidates = 0, rejected = 0, boxRejected = 0, queries = 0, coldIterations = 0, warmIterations = 0,
        coldNotConverged = 0, warmNotConverged = 0, contacts = 0, lubricated = 0, damped = 0,
        dampingSweeps = 0;
+  long paperQueries = 0, paperColdIterations = 0, paperWarmIterations = 0, paperNotConverged = 0;
   PeerStatistics peer;
 };
 
@@ -515,13 +522,19 @@ const char* kColumns =
     "coldUsPerQuery,warmUsPerQuery,naiveUsPerQuery,"
     "candidatePairs,prefilterRejected,boxRejected,distanceQueries,coldMeanIterations,warmMeanIterations,"
     "coldNotConverged,warmNotConverged,contacts,lubricated,dampingUs,dampedPairs,dampingSweeps,"
-    "naivePairsTested,naiveSphereOverlaps,naiveQueries,naiveMeanIterations,naiveNotConverged\n";
+    "naivePairsTested,naiveSphereOverlaps,naiveQueries,naiveMeanIterations,naiveNotConverged,"
+    "paperColdUs,paperColdQ1Us,paperColdQ3Us,paperWarmUs,paperWarmQ1Us,paperWarmQ3Us,"
+    "paperOverDualCold,paperOverDualWarm,paperQueries,paperColdMeanIterations,paperWarmMeanIterations,"
+    "paperNotConverged\n";
 
 /// One (Ar, mode): warm-up rounds, then the timed rounds, interleaved.
 void measure(Scene& scene, CollisionMode mode, int warmupRounds, int rounds, Timings& tm, Counts& n) {
   using clock = std::chrono::steady_clock;
   const Settings settings = settingsFor(mode);
   CollisionModel warmModel = modelFor(settings), coldModel = modelFor(settings);
+  Settings paperSettings = settings;
+  paperSettings.distanceMethod = "paper";
+  CollisionModel paperWarmModel = modelFor(paperSettings), paperColdModel = modelFor(paperSettings);
   StagedReplica replica;
   const ellipsoids::DualNewton dual;
   Spheres sp;
@@ -578,18 +591,33 @@ void measure(Scene& scene, CollisionMode mode, int warmupRounds, int rounds, Tim
     const auto n1 = clock::now();
     const long overlaps = ps.sphereOverlaps;
 
+    // the same call with the paper's distance methods, warm then cold
+    paperWarmModel.resetStatistics();
+    const double pw0 = cpuNow();
+    paperWarmModel.forces(bodies, kContactTime, kSubDt, force, torque);
+    const double pw1 = cpuNow();
+    paperColdModel.clearHistory();
+    paperColdModel.resetStatistics();
+    const double pc0 = cpuNow();
+    paperColdModel.forces(bodies, kContactTime, kSubDt, force, torque);
+    const double pc1 = cpuNow();
+    const collision::CollisionStatistics pws = paperWarmModel.statistics();
+    const collision::CollisionStatistics pcs = paperColdModel.statistics();
+
     // the replicas must do what the model does
     if (st.candidates != cs.candidatePairs || st.rejected != cs.prefilterRejected ||
         st.queries != cs.distanceQueries || overlaps != cs.candidatePairs ||
         ps.sphereOverlaps != cs.candidatePairs || ws.candidatePairs != cs.candidatePairs ||
-        ws.distanceQueries != cs.distanceQueries) {
+        ws.distanceQueries != cs.distanceQueries || pcs.contacts != cs.contacts ||
+        pcs.prefilterRejected != cs.prefilterRejected) {
       throw std::logic_error(
           "the benchmark's replica of the model's steps disagrees with CollisionModel "
           "(candidate pairs: model " + std::to_string(cs.candidatePairs) + ", replica " +
           std::to_string(st.candidates) + ", naive " + std::to_string(overlaps) +
           "; rejected: model " + std::to_string(cs.prefilterRejected) + ", replica " +
           std::to_string(st.rejected) + "; queries: model " + std::to_string(cs.distanceQueries) +
-          ", replica " + std::to_string(st.queries) +
+          ", replica " + std::to_string(st.queries) + "; contacts: dual " + std::to_string(cs.contacts) +
+          ", paper " + std::to_string(pcs.contacts) +
           "): update Spheres/StagedReplica in collisionCost.cpp to follow CollisionModel.cpp");
     }
     if (r < warmupRounds) continue;
@@ -599,6 +627,12 @@ void measure(Scene& scene, CollisionMode mode, int warmupRounds, int rounds, Tim
     n.dampingSweeps += dampingSweeps;
     tm.cold.push_back(cc1 - cc0);
     tm.naive.push_back(nc1 - nc0);
+    tm.paperWarm.push_back(pw1 - pw0);
+    tm.paperCold.push_back(pc1 - pc0);
+    n.paperQueries += pcs.distanceQueries;
+    n.paperColdIterations += pcs.distanceIterations;
+    n.paperWarmIterations += pws.distanceIterations;
+    n.paperNotConverged += pcs.distanceNotConverged + pws.distanceNotConverged;
     tm.clearHistory.push_back(h1 - h0);
     const double stages = st.setup + st.search + st.prefilter;
     tm.restCold.push_back(tm.cold.back() - stages - st.distancesCold);
@@ -694,12 +728,18 @@ void runTable(const TableOptions& t) {
         << n.contacts / R << ',' << n.lubricated / R << ',' << med(tm.damping) << ','
         << n.damped / R << ',' << ratio(n.dampingSweeps, long(tm.damping.size())) << ','
         << n.peer.pairsTested / R << ',' << n.peer.sphereOverlaps / R << ',' << naiveQueries << ','
-        << ratio(n.peer.iterations, n.peer.queries) << ',' << n.peer.notConverged << '\n';
+        << ratio(n.peer.iterations, n.peer.queries) << ',' << n.peer.notConverged << ','
+        << med(tm.paperCold) << ',' << q1(tm.paperCold) << ',' << q3(tm.paperCold) << ','
+        << med(tm.paperWarm) << ',' << q1(tm.paperWarm) << ',' << q3(tm.paperWarm) << ','
+        << med(tm.paperCold) / cold << ',' << med(tm.paperWarm) / warm << ',' << n.paperQueries / R << ','
+        << ratio(n.paperColdIterations, n.paperQueries) << ',' << ratio(n.paperWarmIterations, n.paperQueries)
+        << ',' << n.paperNotConverged << '\n';
       f.flush();
       if (!f) throw std::runtime_error("writing '" + t.out + "' failed");
       std::cerr << "collisionCost: Ar " << c.name << ' ' << toString(mode) << ": cold "
                 << std::fixed << std::setprecision(0) << cold << " us, warm " << warm
-                << " us, naive " << naive << " us per call (" << n.queries / R << " distances; "
+                << " us, naive " << naive << " us, paper " << med(tm.paperCold) << " / "
+                << med(tm.paperWarm) << " us per call (" << n.queries / R << " distances; "
                 << std::setprecision(1) << seconds(t1, std::chrono::steady_clock::now()) << " s)"
                 << std::defaultfloat << std::endl;
     }

@@ -107,6 +107,18 @@ def tables(rows):
                 r["warmNotConverged"], r["contacts"], r["lubricated"], r["coldUsPerQuery"],
                 r["warmUsPerQuery"], r["naiveQueries"], r["naiveMeanIterations"],
                 r["naiveUsPerQuery"], r["naiveNotConverged"]))
+        if all("paperColdUs" in r for r in rs):
+            out += ["", "The same calls with `distanceMethod paper` (Moving Balls for 1/3 < Ar < 3, GJK "
+                    "otherwise, certified stop; overlapping pairs asked again of the dual method), "
+                    "in the same rounds (ms, median [Q1, Q3]):", "",
+                    "| Ar | dual cold | paper cold | paper/dual cold | dual warm | paper warm | paper/dual warm | paper queries | paper mean it. cold / warm | paper not conv. |",
+                    "|---|---|---|---|---|---|---|---|---|---|"]
+            for r in rs:
+                out.append("| %s | %s | %s [%s, %s] | %.2f | %s | %s [%s, %s] | %.2f | %.1f | %.2f / %.2f | %d |" % (
+                    r["aspectRatio"], ms(r["coldUs"]), ms(r["paperColdUs"]), ms(r["paperColdQ1Us"]),
+                    ms(r["paperColdQ3Us"]), r["paperOverDualCold"], ms(r["warmUs"]), ms(r["paperWarmUs"]),
+                    ms(r["paperWarmQ1Us"]), ms(r["paperWarmQ3Us"]), r["paperOverDualWarm"], r["paperQueries"],
+                    r["paperColdMeanIterations"], r["paperWarmMeanIterations"], r["paperNotConverged"]))
         if any(r.get("dampedPairs", 0) > 0 for r in rs):
             out += ["", "The implicit damping solve (dampingForces, once per sub-step after the "
                     "Heun evaluations; its Gauss-Seidel sweeps over the damped pairs):", "",

@@ -7,8 +7,10 @@
  * augmented bounding-sphere test of eq. 4.2, |r1 - r2| <= 2 max(a, b) + eps_al R_eq
  * (eps_al = 0.2), with body 2 moved to its image nearest to body 1.
  * Reference: the dual method and GJK, both with a certified bracket of
- * 1e-12 R_eq; the reference is the dual answer and its uncertainty the larger
- * of the two brackets and their difference.
+ * 1e-11 R_eq (the certified floor of Ar 6 pairs at coordinates up to 40 D_eq
+ * is about 5e-13 R_eq: the rounding allowance grows with the elongation,
+ * CertifiedBracket.hpp); the reference is the dual answer and its uncertainty
+ * the larger of the two brackets and their difference.
  */
 #ifndef DISTANCEBENCHMARK_PACKINGQUERIES_HPP
 #define DISTANCEBENCHMARK_PACKINGQUERIES_HPP
@@ -59,7 +61,7 @@ inline int computeReferences(std::vector<Query>& qs, Scalar rEq) {
   const auto dual = ellipsoids::makeDistanceMethod("dual");
   const auto gjk = ellipsoids::makeDistanceMethod("gjk");
   DistanceOptions o;
-  o.epsD = 1e-12 * rEq;
+  o.epsD = 1e-11 * rEq;
   o.stopRule = ellipsoids::StopRule::certified;
   int disagreements = 0;
   for (Query& q : qs) {

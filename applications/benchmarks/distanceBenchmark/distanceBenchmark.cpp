@@ -17,6 +17,12 @@
  *              warm-started dual and GJK
  *   smallArray the paper's Tables 1 and 5: Newton-Coulomb and Jain et al. on
  *              l = 5, Ar = 1/6, alpha = 0.25, against GJK
+ *   epsTheta   the paper's Fig. F.26 check: Moving Balls stopped by the angle
+ *              test with the adaptive eps_theta of eq. F.6 (as the paper) and
+ *              with the global one of eq. 2.9, max error against the reference
+ *              over every query of the l = 40, alpha = 0.25 packings (the
+ *              paper's set), eps_d/R_eq 1e-3 .. 1e-8 (not timed; not in the
+ *              default set of studies, run it by name)
  * -quick: smaller boxes and grids (for CI: checks that it runs, not speed).
  * DIR/machine.txt: the CPU, cores and compiler of the run.
  * Progress (done/total, time left) on stderr.
@@ -431,6 +437,39 @@ void studySmallArray(const Settings& s) {
   }
 }
 
+// ---------------------------------------------------------------------------
+void studyEpsTheta(const Settings& s) {
+  // Fig. F.26: l = 40, alpha = 0.25, every Ar; the paper ran the adaptive eps_theta (App. F.3)
+  const double l = s.quick ? 8 : 40;
+  const double alpha = 0.25;
+  const std::vector<double> epss = s.quick ? std::vector<double>{1e-5, 1e-8}
+                                           : std::vector<double>{1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8};
+  std::ofstream f = openCsv(s, "epsTheta",
+                            "ar,alpha,l,queries,epsRel,rule,maxErrorRel,outOfTolerance,failures,"
+                            "meanIterations,maxIterations,referenceDisagreements");
+  const auto mb = makeDistanceMethod("movingBalls");
+  Progress progress("epsTheta", long(kAspectRatios.size() * epss.size() * 2));
+  for (double ar : kAspectRatios) {
+    const packing::Packing p = makePacking(ar, alpha, l, s.seed);
+    std::vector<Query> qs = makeQueries(p);
+    const double rEq = equivalentRadius(p);
+    const int disagreements = computeReferences(qs, rEq);
+    for (double eps : epss) {
+      for (const bool adaptive : {true, false}) {
+        DistanceOptions o;
+        o.epsD = eps * rEq;
+        o.stopRule = StopRule::paper;
+        o.adaptiveEpsTheta = adaptive;
+        const Accuracy a = accuracyOf(*mb, qs, o, rEq);
+        f << arName(ar) << ',' << alpha << ',' << l << ',' << qs.size() << ',' << eps << ','
+          << (adaptive ? "F.6" : "2.9") << ',' << a.maxError << ',' << a.outOfTolerance << ',' << a.failures
+          << ',' << a.meanIterations << ',' << a.maxIterations << ',' << disagreements << std::endl;
+        progress.step();
+      }
+    }
+  }
+}
+
 void writeMachine(const Settings& s) {
   std::ifstream cpu("/proc/cpuinfo");
   std::string line, model = "unknown", mhz = "unknown";
@@ -465,7 +504,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> studies;
   const std::map<std::string, std::function<void(const Settings&)>> all = {
       {"grid", studyGrid}, {"boxSize", studyBoxSize}, {"peer", studyPeer},
-      {"warmStart", studyWarmStart}, {"smallArray", studySmallArray}};
+      {"warmStart", studyWarmStart}, {"smallArray", studySmallArray}, {"epsTheta", studyEpsTheta}};
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "-quick") {
@@ -478,7 +517,7 @@ int main(int argc, char** argv) {
       studies.push_back(a);
     } else {
       std::cerr << "Usage: distanceBenchmark [-quick] [-out DIR] [-seed S] "
-                   "[grid|boxSize|peer|warmStart|smallArray ...]\n(unknown argument '"
+                   "[grid|boxSize|peer|warmStart|smallArray|epsTheta ...]\n(unknown argument '"
                 << a << "')\n";
       return 2;
     }

@@ -3,7 +3,7 @@
 
     plotBenchmarks.py DIR
 
-Reads DIR/{grid,boxSize,peer,warmStart,smallArray}.csv and DIR/machine.txt
+Reads DIR/{grid,boxSize,peer,warmStart,smallArray,epsTheta}.csv and DIR/machine.txt
 (whatever exists), writes DIR/*.png, DIR/results.h5 (one group per CSV) and
 DIR/tables.md (the tables quoted in docs/benchmarks.md). Debian's
 /usr/bin/python3 with python3-matplotlib, python3-numpy, python3-h5py.
@@ -30,7 +30,7 @@ def load(path):
         rows = list(csv.DictReader(f))
     for r in rows:
         for k, v in r.items():
-            if k in ("ar", "method", "start", "parameter"):
+            if k in ("ar", "method", "start", "parameter", "rule"):
                 continue
             try:
                 r[k] = float(v)
@@ -75,7 +75,9 @@ def main():
     peer = load(os.path.join(d, "peer.csv"))
     warm = load(os.path.join(d, "warmStart.csv"))
     small = load(os.path.join(d, "smallArray.csv"))
-    to_hdf5(d, {"grid": grid, "boxSize": box, "peer": peer, "warmStart": warm, "smallArray": small})
+    epsTheta = load(os.path.join(d, "epsTheta.csv"))
+    to_hdf5(d, {"grid": grid, "boxSize": box, "peer": peer, "warmStart": warm, "smallArray": small,
+                "epsTheta": epsTheta})
     lines = []
     machine = os.path.join(d, "machine.txt")
     if os.path.exists(machine):
@@ -287,6 +289,36 @@ def main():
                 for r in small]
         lines += md_table(["method", "parameters", "queries", "not converged", "% not converged",
                            "time / GJK's (converged queries)", "max error/R_eq"], rows)
+
+    if epsTheta:
+        # Fig. F.26: Moving Balls' max error against eps_d, eq. F.6 (the paper's check) and eq. 2.9
+        epss = sorted({r["epsRel"] for r in epsTheta})
+        fig, ax = plt.subplots(figsize=(5, 4))
+        nq = sum(r["queries"] for r in by(epsTheta, epsRel=epss[0], rule="F.6"))
+        for rule, marker in (("F.6", "o"), ("2.9", "s")):
+            y = [max(r["maxErrorRel"] for r in by(epsTheta, epsRel=e, rule=rule)) for e in epss]
+            ax.loglog(epss, y, marker, mfc="none", label="eps_theta of eq. %s" % rule)
+        ax.loglog(epss, epss, "k--", label="y = eps_d")
+        ax.set_xlabel("eps_d / R_eq")
+        ax.set_ylabel("max |d_MB - d_ref| / R_eq")
+        ax.set_title("Moving Balls, paper stop, %d queries per eps_d (Fig. F.26)" % nq, fontsize=9)
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(d, "movingBallsAdaptiveErrorVsEps.png"), dpi=110)
+        plt.close(fig)
+        lines += ["", "## Fig. F.26 check: Moving Balls with the paper's angle stop, l = %g, alpha_p %g, every Ar"
+                  % (epsTheta[0]["l"], epsTheta[0]["alpha"]), ""]
+        rows = []
+        for rule in ("F.6", "2.9"):
+            for e in epss:
+                rs = by(epsTheta, epsRel=e, rule=rule)
+                worst = max(r["maxErrorRel"] for r in rs)
+                rows.append(["eq. " + rule, "%g" % e, "%.2e" % worst, "%.2f" % (worst / e),
+                             "%d" % sum(r["outOfTolerance"] for r in rs), "%d" % sum(r["failures"] for r in rs),
+                             "%.1f" % max(r["meanIterations"] for r in rs), "%d" % max(r["maxIterations"] for r in rs),
+                             "%d" % sum(r["queries"] for r in rs)])
+        lines += md_table(["eps_theta", "eps_d/R_eq", "max error/R_eq", "max error/eps_d", "error > eps_d",
+                           "not converged", "worst mean it.", "max it.", "queries"], rows)
 
     with open(os.path.join(d, "tables.md"), "w") as f:
         f.write("\n".join(lines) + "\n")

@@ -33,7 +33,7 @@ import caseWriter
 import references
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
-from validationTools import cpu_seconds, provenance, read_csv, write_csv  # noqa: E402
+from validationTools import cpu_seconds, provenance, read_csv, run_logged, write_csv  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 RESULTS = os.path.join(HERE, "results")
@@ -74,9 +74,7 @@ def run_case(case, ar, incidence, re, cpd, end_time=END_TIME):
         subprocess.run(["rm", "-rf", case], check=True)
     dt, steps, cells = caseWriter.write_case(case, ar, incidence, re, cpd, end_time)
     print(f"{os.path.basename(case)}: {cells} cells, dt {dt:.4g}, {steps} steps", flush=True)
-    with open(os.path.join(case, "log.solver"), "w") as out:
-        rc = subprocess.run(["nice", "-n", "10", "pimpleFoam"], cwd=case, stdout=out,
-                            stderr=subprocess.STDOUT).returncode
+    rc = run_logged(["nice", "-n", "10", "pimpleFoam"], case, "log.solver")
     if rc != 0:
         raise RuntimeError(f"pimpleFoam failed in {case} (see log.solver)")
     t, F = read_force(case)

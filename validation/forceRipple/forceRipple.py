@@ -36,7 +36,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "stokesDrag"))
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
 import caseWriter  # noqa: E402
 from runner import read_force  # noqa: E402
-from validationTools import mesh_cells, provenance, read_csv, write_csv, cpu_seconds  # noqa: E402
+from validationTools import mesh_cells, provenance, read_csv, run_logged, write_csv, cpu_seconds  # noqa: E402
 
 RESULTS = os.path.join(HERE, "results")
 RUNS_CSV = os.path.join(RESULTS, "runs.csv")
@@ -78,9 +78,7 @@ def run_one(name, cpd, forcing):
         subprocess.run(["blockMesh"], cwd=case, stdout=out, stderr=subprocess.STDOUT, check=True)
     print(f"{name}: {mesh_cells(case)} cells, dt {dt:.4g}, {n_start} + {n_cross} steps",
           flush=True)
-    with open(os.path.join(case, "log.solver"), "w") as out:
-        rc = subprocess.run(["nice", "-n", "10", "pimpleFoam"], cwd=case, stdout=out,
-                            stderr=subprocess.STDOUT).returncode
+    rc = run_logged(["nice", "-n", "10", "pimpleFoam"], case, "log.solver")
     if rc != 0:
         raise RuntimeError(f"pimpleFoam failed in {case} (see log.solver)")
     times, F = read_force(case)

@@ -20,7 +20,7 @@ import numpy as np
 import caseWriter
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
-from validationTools import mesh_cells  # noqa: E402
+from validationTools import mesh_cells, run_logged  # noqa: E402
 
 
 def jeffery_phi(t, r, gamma=1.0, t0=0.0, phi0=0.0):
@@ -146,8 +146,7 @@ expressions
               f"nu = {info['nu']:.4g}, viscous number nu dt/h^2 = {info['lam']:.3g}", flush=True)
     cmd = (["nice", "-n", "10"] if nice else []) + ["immersedSpheroidFoam"]
     for attempt in range(10):
-        with open(os.path.join(case, "log.solver"), "w") as out:
-            rc = subprocess.run(cmd, cwd=case, stdout=out, stderr=subprocess.STDOUT).returncode
+        rc = run_logged(cmd, case, "log.solver")
         with open(os.path.join(case, "log.solver")) as fh:
             text = fh.read(4000)
         # the project's libraries being rebuilt at that moment (a shared

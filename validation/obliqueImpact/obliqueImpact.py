@@ -18,7 +18,6 @@ import argparse
 import math
 import os
 import shutil
-import subprocess
 import sys
 import time
 from pathlib import Path
@@ -26,8 +25,8 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
-from validationTools import (provenance, read_csv, set_entry, substitute_re,  # noqa: E402
-                             write_csv)
+from validationTools import (provenance, read_csv, run_logged, set_entry,  # noqa: E402
+                             substitute_re, write_csv)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -137,9 +136,7 @@ def run_one(friction, cpd, force, quick):
     info = write_case(case, friction, cpd, quick)
     print(f"{tag}: {info['cells']} cells, dt {info['dt']:.3g} s", flush=True)
     start = time.time()
-    with open(os.path.join(case, "log.Allrun"), "w") as log:
-        rc = subprocess.run(["nice", "-n", "5", "./Allrun"], cwd=case, stdout=log,
-                            stderr=subprocess.STDOUT).returncode
+    rc = run_logged(["nice", "-n", "5", "./Allrun"], case, "log.Allrun")
     wall = time.time() - start
     if rc != 0:
         sys.exit(f"obliqueImpact: {tag} failed (see {case}/log.*)")

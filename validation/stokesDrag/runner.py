@@ -34,7 +34,7 @@ import numpy as np
 import caseWriter
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
-from validationTools import mesh_cells  # noqa: E402
+from validationTools import mesh_cells, run_logged  # noqa: E402
 
 
 def read_force(case):
@@ -88,8 +88,7 @@ def _solver(case, np_, log_name):
     cmd = ["nice", "-n", "10", "pimpleFoam"]
     if np_ > 1:
         cmd = ["mpirun", "--oversubscribe", "-np", str(np_)] + cmd + ["-parallel"]
-    with open(os.path.join(case, log_name), "w") as log:
-        rc = subprocess.run(cmd, cwd=case, stdout=log, stderr=subprocess.STDOUT).returncode
+    rc = run_logged(cmd, case, log_name)
     if rc != 0:
         raise RuntimeError(f"pimpleFoam failed in {case} (see {log_name})")
 

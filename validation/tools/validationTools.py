@@ -32,6 +32,33 @@ TOP = Path(__file__).resolve().parents[2]
 REFINED_BOX_MESH = TOP / "applications" / "utilities" / "refinedBoxMesh" / "refinedBoxMesh.py"
 
 
+FOAM_PROGRESS = TOP / "bin" / "foamProgress"
+
+
+# ---------------------------------------------------------------------------
+# running a case
+
+
+def run_logged(cmd, case, log_name):
+    """Run cmd (a list) in the folder case with its output in case/log_name,
+    while bin/foamProgress shows one progress line on stderr: simulated time of
+    endTime, steps, wall time, time left (rewritten in place on a terminal, a
+    line every 30 s otherwise). It follows the newest solver log below case:
+    log_name itself for a solver run directly, the solver's log for a script
+    such as ./Allrun. Returns cmd's exit status."""
+    case = os.path.abspath(case)
+    with open(os.path.join(case, log_name), "w") as out:
+        proc = subprocess.Popen(cmd, cwd=case, stdout=out, stderr=subprocess.STDOUT)
+    watcher = subprocess.Popen([str(FOAM_PROGRESS), "-watch", str(proc.pid), case])
+    try:
+        return proc.wait()
+    finally:
+        if proc.poll() is None:   # interrupted: do not leave the solver running
+            proc.terminate()
+            proc.wait()
+        watcher.wait()            # ends within a second of the run
+
+
 # ---------------------------------------------------------------------------
 # provenance
 

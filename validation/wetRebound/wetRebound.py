@@ -34,7 +34,6 @@ import argparse
 import math
 import os
 import shutil
-import subprocess
 import sys
 import time
 from pathlib import Path
@@ -42,7 +41,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
-from validationTools import (cpu_seconds, provenance, read_csv,  # noqa: E402
+from validationTools import (cpu_seconds, provenance, read_csv, run_logged,  # noqa: E402
                              substitute_re, write_csv)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -182,9 +181,7 @@ def run_one(name, cpd, force, quick, max_overlap=None, saturation=None):
     info = write_case(case, name, cpd, max_overlap=max_overlap, saturation=saturation)
     print(f"{tag}: {info['cells']} cells, dt {info['dt']:.3g} s, end {info['end']:.3g} s", flush=True)
     start = time.time()
-    with open(os.path.join(case, "log.Allrun"), "w") as log:
-        rc = subprocess.run(["nice", "-n", "5", "./Allrun"], cwd=case, stdout=log,
-                            stderr=subprocess.STDOUT).returncode
+    rc = run_logged(["nice", "-n", "5", "./Allrun"], case, "log.Allrun")
     wall = time.time() - start
     solver_log = os.path.join(case, "log.immersedSpheroidFoam")
     if rc != 0 or not os.path.exists(solver_log):

@@ -6,6 +6,7 @@ import re
 import subprocess
 import sys
 import tempfile
+import time
 import unittest
 from pathlib import Path
 from unittest import mock
@@ -155,6 +156,23 @@ class Logs(unittest.TestCase):
             self.assertEqual(vt.execution_times(os.path.join(d, "log.solver")), [0.5, 1.25])
             self.assertEqual(vt.mesh_cells(d), 24)
             self.assertTrue(math.isnan(vt.cpu_seconds(os.path.join(d, "none"))))
+
+
+class RunLogged(unittest.TestCase):
+    def test_status_log_and_no_hang(self):
+        # a stand-in solver: a few "Time = " lines, then exit status 3
+        with tempfile.TemporaryDirectory() as d:
+            os.makedirs(os.path.join(d, "system"))
+            with open(os.path.join(d, "system", "controlDict"), "w") as f:
+                f.write(CONTROL_DICT)
+            script = ("for t in 0.02 0.04 0.06; do echo \"Time = $t\"; "
+                      "echo \"ExecutionTime = 0.1 s  ClockTime = 1 s\"; sleep 0.2; done; exit 3")
+            start = time.monotonic()
+            rc = vt.run_logged(["bash", "-c", script], d, "log.fakeFoam")
+            self.assertEqual(rc, 3)
+            self.assertLess(time.monotonic() - start, 10)  # the watcher ends with the run
+            with open(os.path.join(d, "log.fakeFoam")) as f:
+                self.assertEqual(len(re.findall(r"^Time = ", f.read(), re.MULTILINE)), 3)
 
 
 class CaseFiles(unittest.TestCase):

@@ -363,7 +363,8 @@ struct StagedReplica {
     const auto& pairs = search.find(sp.centres, sp.radii);
     const double t2 = cpuNow();
     kept.clear();
-    for (const auto& [i, j] : pairs) {
+    for (const collision::CandidatePair& pair : pairs) {
+      const int i = pair.first, j = pair.second;  // (no periodic axes here: no image shift)
       if (!bodies[i].movable && !bodies[j].movable) continue;
       const bool boxesApart =
           ((sp.centres[i] - sp.centres[j]).cwiseAbs() - sp.halfExtent[i] - sp.halfExtent[j])

@@ -86,8 +86,9 @@ std::vector<PairRecord> CollisionModel::history() const {
   std::unordered_map<std::uint64_t, PairRecord> merged;
   auto record = [&merged](std::uint64_t k) -> PairRecord& {
     PairRecord& r = merged[k];
-    r.first = static_cast<int>(static_cast<std::uint32_t>(k >> 32));
-    r.second = static_cast<int>(static_cast<std::uint32_t>(k & 0xffffffffu));
+    r.first = PairKey::first(k);
+    r.second = PairKey::second(k);
+    r.image = PeriodicBox::multiples(PairKey::image(k));
     return r;
   };
   for (const auto& [k, d] : direction_) {
@@ -107,7 +108,8 @@ std::vector<PairRecord> CollisionModel::history() const {
   out.reserve(merged.size());
   for (const auto& kv : merged) out.push_back(kv.second);
   std::sort(out.begin(), out.end(), [](const PairRecord& a, const PairRecord& b) {
-    return a.first != b.first ? a.first < b.first : a.second < b.second;
+    return a.first != b.first ? a.first < b.first
+                              : (a.second != b.second ? a.second < b.second : a.image < b.image);
   });
   return out;
 }
@@ -128,9 +130,19 @@ void CollisionModel::setHistory(const std::vector<PairRecord>& records) {
                 r.contactForce.allFinite(),
             "pair history " + pair +
                 ": spring force, stiffness and overlap must be finite and >= 0, the contact force finite");
-    if (r.warm) direction_[key(r.first, r.second)] = r.direction;
+    int image = PeriodicBox::kNoImage;
+    try {
+      image = PeriodicBox::imageCode(r.image);
+    } catch (const std::out_of_range&) {
+      require(false, "pair history " + pair + ": image multiples must be in [-" +
+                         std::to_string(PeriodicBox::kMaxMultiple) + ", " +
+                         std::to_string(PeriodicBox::kMaxMultiple) + "]");
+    }
+    require(r.second >= 0 || image == PeriodicBox::kNoImage,
+            "pair history " + pair + ": a wall pair has no periodic image");
+    if (r.warm) direction_[key(r.first, r.second, image)] = r.direction;
     if (r.contactTime > 0) {
-      contact_[key(r.first, r.second)] =
+      contact_[key(r.first, r.second, image)] =
           ContactState{r.contactTime, r.springForce, r.stiffness, r.overlap, r.contactForce};
     }
   }
@@ -172,6 +184,7 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
                             Scalar subDt, std::vector<Vec3>& force, std::vector<Vec3>& torque,
                             bool recordDamping) {
   const int n = static_cast<int>(bodies.size());
+  require(n <= PairKey::kMaxBodies, "collision: at most " + std::to_string(PairKey::kMaxBodies) + " bodies");
   force.assign(n, Vec3::Zero());
   torque.assign(n, Vec3::Zero());
   recordDamping_ = recordDamping;
@@ -179,8 +192,8 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
   // each body's contact forces of the last call, from the pairs' (restart-safe)
   lastContactForce_.assign(n, Vec3::Zero());
   for (const auto& [k, c] : contact_) {
-    const int i = static_cast<int>(static_cast<std::uint32_t>(k >> 32));
-    const int j = static_cast<int>(static_cast<std::uint32_t>(k & 0xffffffffu));
+    const int i = PairKey::first(k);
+    const int j = PairKey::second(k);
     if (i < n) lastContactForce_[i] -= c.force;
     if (j >= 0 && j < n) lastContactForce_[j] += c.force;
   }
@@ -210,19 +223,23 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
   nextDirection_.clear();
   nextContact_.clear();
 
-  const auto& pairs = search_.find(centres_, radii_);
+  const auto& pairs = search_.find(centres_, radii_, box_);
   statistics_.candidatePairs += static_cast<long>(pairs.size());
-  for (const auto& [i, j] : pairs) {
-    const ellipsoids::Ellipsoid& e1 = bodies[i].shape;
-    const ellipsoids::Ellipsoid& e2 = bodies[j].shape;
+  for (const CandidatePair& candidate : pairs) {
+    const int i = candidate.first, j = candidate.second;
     if (!bodies[i].movable && !bodies[j].movable) continue;
+    // body j through its image (a copy only for a shifted image)
+    const bool shifted = candidate.image != PeriodicBox::kNoImage;
+    const Vec3 shift = shifted ? box_.shift(candidate.image) : Vec3::Zero();
+    const ellipsoids::Ellipsoid& e1 = bodies[i].shape;
+    const ellipsoids::Ellipsoid e2 = shifted ? bodies[j].shape.translatedBy(shift) : bodies[j].shape;
     // boxes apart (cheap), or the exact test: the grown bodies are apart
-    if (((centres_[i] - centres_[j]).cwiseAbs() - halfExtent_[i] - halfExtent_[j]).maxCoeff() > 0) {
+    if (((centres_[i] - centres_[j] - shift).cwiseAbs() - halfExtent_[i] - halfExtent_[j]).maxCoeff() > 0) {
       ++statistics_.prefilterRejected;
       ++statistics_.boxRejected;
       continue;
     }
-    if (overlap_.test(grown_[i], grown_[j]) ==
+    if (overlap_.test(grown_[i], shifted ? grown_[j].translatedBy(shift) : grown_[j]) ==
         ellipsoids::OverlapStatus::separated) {
       ++statistics_.prefilterRejected;
       continue;
@@ -230,7 +247,8 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
     ellipsoids::DistanceOptions options;
     options.epsD = settings_.distanceAccuracy * std::min(e1.minGaussianRadius(), e2.minGaussianRadius());
     options.stopRule = ellipsoids::StopRule::certified;  // Moving Balls: the bracket, not eps_theta
-    const auto warm = direction_.find(key(i, j));
+    const std::uint64_t pairKey = key(i, j, candidate.image);
+    const auto warm = direction_.find(pairKey);
     if (warm != direction_.end()) {
       options.useInitialDirection = true;
       options.initialDirection = warm->second;
@@ -258,9 +276,9 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
       throw std::runtime_error("collision: no finite distance between bodies " +
                                std::to_string(i) + " and " + std::to_string(j));
     }
-    nextDirection_[key(i, j)] = r.direction;
-    interact(bodies, i, j, r.distance, r.direction, r.point1, r.point2, contactTime, subDt,
-             force, torque);
+    nextDirection_[pairKey] = r.direction;
+    interact(bodies, i, j, candidate.image, shift, r.distance, r.direction, r.point1, r.point2,
+             contactTime, subDt, force, torque);
   }
 
   for (int i = 0; i < n; ++i) {
@@ -277,7 +295,8 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
       if (d.distance > std::max(lubricationReach, films ? bodies[i].filmGap : Scalar(0))) {
         continue;
       }
-      interact(bodies, i, -1 - w, d.distance, -walls_[w].normal, d.bodyPoint, d.wallPoint,
+      interact(bodies, i, -1 - w, PeriodicBox::kNoImage, Vec3::Zero(), d.distance,
+               -walls_[w].normal, d.bodyPoint, d.wallPoint,
                contactTime, subDt, force, torque);
     }
   }
@@ -313,7 +332,8 @@ Scalar CollisionModel::sustainedLoad(const std::vector<CollisionBody>& bodies, i
   return pressing / (w1 + w2);
 }
 
-void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, int j, Scalar gap,
+void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, int j, int image,
+                              const Vec3& shift, Scalar gap,
                               const Vec3& n, const Vec3& p1, const Vec3& p2, Scalar contactTime,
                               Scalar subDt, std::vector<Vec3>& force, std::vector<Vec3>& torque) {
   const bool wall = j < 0;
@@ -326,8 +346,9 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
   Vec3 v2 = Vec3::Zero();
   Scalar aMin = b1.shape.minSemiAxis();
   if (!wall) {
-    s2 = sideOf(bodies[j], point);
-    v2 = pointVelocity(bodies[j], point);
+    // body j is met through its image shifted by shift: its own frame is the point less the shift
+    s2 = sideOf(bodies[j], point - shift);
+    v2 = pointVelocity(bodies[j], point - shift);
     aMin = std::min(aMin, bodies[j].shape.minSemiAxis());
   }
   const Vec3 relative = v2 - pointVelocity(b1, point);
@@ -337,7 +358,7 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
   if (gap < 0) {
     const Scalar overlap = -gap;
     const Scalar cap = settings_.maxOverlap * aMin;
-    const std::uint64_t k = key(i, j);
+    const std::uint64_t k = key(i, j, image);
     const auto known = contact_.find(k);
     ContactState c = known != contact_.end() ? known->second
                                              : model.contact().firstTouch(contactTime, un, cap);
@@ -380,7 +401,7 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
   const bool film = filmGap > 0 && gap < filmGap;
   if (lubricating || film) {
     const Scalar r1 = b1.shape.curvatureRadii(p1).gaussian;
-    const Scalar r2 = wall ? kInf : bodies[j].shape.curvatureRadii(p2).gaussian;
+    const Scalar r2 = wall ? kInf : bodies[j].shape.curvatureRadii(p2 - shift).gaussian;
     DampedPair pair;
     pair.first = i;
     pair.second = j;
@@ -591,9 +612,12 @@ std::vector<CollisionModel::Overlap> CollisionModel::overlaps(
     centres[i] = bodies[i].shape.centre();
     radii[i] = bodies[i].shape.maxSemiAxis();
   }
-  for (const auto& [i, j] : search_.find(centres, radii)) {
+  for (const CandidatePair& candidate : search_.find(centres, radii, box_)) {
+    const int i = candidate.first, j = candidate.second;
     const ellipsoids::Ellipsoid& e1 = bodies[i].shape;
-    const ellipsoids::Ellipsoid& e2 = bodies[j].shape;
+    const ellipsoids::Ellipsoid e2 = candidate.image == PeriodicBox::kNoImage
+                                         ? bodies[j].shape
+                                         : bodies[j].shape.translatedBy(box_.shift(candidate.image));
     if (overlap_.test(e1, e2) == ellipsoids::OverlapStatus::separated) continue;
     ellipsoids::DistanceOptions options;
     options.epsD = settings_.distanceAccuracy * std::min(e1.minGaussianRadius(), e2.minGaussianRadius());

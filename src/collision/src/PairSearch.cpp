@@ -7,8 +7,9 @@
 
 namespace collision {
 
-const std::vector<std::pair<int, int>>& PairSearch::find(const std::vector<Vec3>& centres,
-                                                         const std::vector<Scalar>& radii) {
+const std::vector<CandidatePair>& PairSearch::find(const std::vector<Vec3>& centres,
+                                                   const std::vector<Scalar>& radii,
+                                                   const PeriodicBox& box) {
   pairs_.clear();
   const int n = static_cast<int>(centres.size());
   if (radii.size() != centres.size()) {
@@ -16,45 +17,71 @@ const std::vector<std::pair<int, int>>& PairSearch::find(const std::vector<Vec3>
                                 std::to_string(radii.size()) + " radii");
   }
   if (n < 2) return pairs_;
-  Vec3 lo = centres[0], hi = centres[0];
   Scalar rMax = 0;
   for (int i = 0; i < n; ++i) {
     if (!centres[i].allFinite() || !(radii[i] > 0) || !std::isfinite(radii[i])) {
       throw std::invalid_argument("PairSearch: body " + std::to_string(i) +
                                   " has a non-finite centre or a radius that is not > 0");
     }
-    lo = lo.cwiseMin(centres[i]);
-    hi = hi.cwiseMax(centres[i]);
     rMax = std::max(rMax, radii[i]);
+  }
+  box.checkRange(2 * rMax);
+
+  // the centres wrapped into the box along its periodic axes, and their extent
+  wrapped_.resize(n);
+  wrappedCentres_.resize(n);
+  for (int i = 0; i < n; ++i) {
+    wrapped_[i] = box.wrapMultiples(centres[i]);
+    wrappedCentres_[i] = centres[i] - box.shift(wrapped_[i]);
+  }
+  Vec3 lo = wrappedCentres_[0], hi = wrappedCentres_[0];
+  for (int i = 1; i < n; ++i) {
+    lo = lo.cwiseMin(wrappedCentres_[i]);
+    hi = hi.cwiseMax(wrappedCentres_[i]);
+  }
+  for (int d = 0; d < 3; ++d) {
+    if (box.periodic(d)) {
+      lo[d] = box.origin()[d];
+      hi[d] = box.origin()[d] + box.length()[d];
+    }
   }
 
   // a dense grid of cells of size >= 2 rMax (a pair can only meet in
   // neighbouring cells), with at most about 2 n + 27 cells in all so that
-  // sparse or widely spread sets stay O(n) in memory and time
+  // sparse or widely spread sets stay O(n) in memory and time; along a
+  // periodic axis a whole number of cells spans the period
   const Vec3 span = hi - lo;
+  auto cellsAlong = [&](int d, Scalar cell) {
+    return box.periodic(d) ? std::max(Scalar(1), std::floor(span[d] / cell)) : std::floor(span[d] / cell) + 1;
+  };
   Scalar cell = 2 * rMax;
   const Scalar maxCells = 2.0 * n + 27;
   for (int pass = 0; pass < 64; ++pass) {
-    const Scalar cells = (std::floor(span.x() / cell) + 1) * (std::floor(span.y() / cell) + 1) *
-                         (std::floor(span.z() / cell) + 1);
+    const Scalar cells = cellsAlong(0, cell) * cellsAlong(1, cell) * cellsAlong(2, cell);
     if (cells <= maxCells) break;
     cell *= std::cbrt(cells / maxCells) * 1.01;
   }
-  if (!((std::floor(span.x() / cell) + 1) * (std::floor(span.y() / cell) + 1) *
-            (std::floor(span.z() / cell) + 1) <= maxCells)) {
+  if (!(cellsAlong(0, cell) * cellsAlong(1, cell) * cellsAlong(2, cell) <= maxCells)) {
     throw std::runtime_error("PairSearch: no cell size found for " + std::to_string(n) +
                              " bodies spanning " + std::to_string(span.maxCoeff()));
   }
-  for (int d = 0; d < 3; ++d) dims_[d] = static_cast<int>(std::floor(span[d] / cell)) + 1;
+  bool duplicates = false;  // a periodic axis of fewer than 3 cells meets a neighbour twice
+  for (int d = 0; d < 3; ++d) {
+    dims_[d] = static_cast<int>(cellsAlong(d, cell));
+    cellSize_[d] = box.periodic(d) ? span[d] / dims_[d] : cell;
+    duplicates = duplicates || (box.periodic(d) && dims_[d] < 3);
+  }
   const int nCells = dims_[0] * dims_[1] * dims_[2];
 
   // counting sort of the bodies by cell
   cellOf_.resize(n);
   cellStart_.assign(nCells + 1, 0);
   for (int i = 0; i < n; ++i) {
-    const Vec3 c = (centres[i] - lo) / cell;
     int idx[3];
-    for (int d = 0; d < 3; ++d) idx[d] = std::min(static_cast<int>(c[d]), dims_[d] - 1);
+    for (int d = 0; d < 3; ++d) {
+      const int k = static_cast<int>((wrappedCentres_[i][d] - lo[d]) / cellSize_[d]);
+      idx[d] = std::max(0, std::min(k, dims_[d] - 1));
+    }
     cellOf_[i] = (idx[0] * dims_[1] + idx[1]) * dims_[2] + idx[2];
     ++cellStart_[cellOf_[i] + 1];
   }
@@ -67,15 +94,34 @@ const std::vector<std::pair<int, int>>& PairSearch::find(const std::vector<Vec3>
   sortedCentres_.resize(n);
   sortedRadii_.resize(n);
   for (int s = 0; s < n; ++s) {
-    sortedCentres_[s] = centres[sorted_[s]];
+    sortedCentres_[s] = wrappedCentres_[sorted_[s]];
     sortedRadii_[s] = radii[sorted_[s]];
   }
-  auto test = [this](int s, int t) {
+  const bool periodic = box.anyPeriodic();
+  auto test = [&](int s, int t) {
+    if (s == t) return;  // (a body meets its own images only on a too small box: checkRange)
     const Scalar reach = sortedRadii_[s] + sortedRadii_[t];
-    if ((sortedCentres_[s] - sortedCentres_[t]).squaredNorm() <= reach * reach) {
-      const int i = sorted_[s], j = sorted_[t];
-      pairs_.emplace_back(std::min(i, j), std::max(i, j));
+    Vec3 d = sortedCentres_[t] - sortedCentres_[s];
+    std::array<int, 3> k{0, 0, 0};
+    if (periodic) {
+      k = box.minimumImage(d);
+      d += box.shift(k);
     }
+    if (d.squaredNorm() > reach * reach) return;
+    int i = sorted_[s], j = sorted_[t];
+    if (!periodic) {
+      pairs_.push_back({std::min(i, j), std::max(i, j), PeriodicBox::kNoImage});
+      return;
+    }
+    // the shift of j's given centre: undo both wraps
+    std::array<int, 3> m;
+    for (int a = 0; a < 3; ++a) m[a] = k[a] + wrapped_[i][a] - wrapped_[j][a];
+    int code = PeriodicBox::imageCode(m);
+    if (i > j) {
+      std::swap(i, j);
+      code = PeriodicBox::opposite(code);
+    }
+    pairs_.push_back({i, j, code});
   };
   // each occupied cell with itself and its 13 "forward" neighbours (half of
   // the 26): every pair of cells, hence every pair of bodies, once
@@ -87,16 +133,39 @@ const std::vector<std::pair<int, int>>& PairSearch::find(const std::vector<Vec3>
     if (s0 == s1) continue;
     for (int s = s0; s < s1; ++s)
       for (int t = s + 1; t < s1; ++t) test(s, t);
-    const int ci = c / (dims_[1] * dims_[2]), cj = (c / dims_[2]) % dims_[1], ck = c % dims_[2];
+    const int cIdx[3] = {c / (dims_[1] * dims_[2]), (c / dims_[2]) % dims_[1], c % dims_[2]};
     for (const auto& o : kForward) {
-      const int a = ci + o[0], b = cj + o[1], k = ck + o[2];
-      if (a >= dims_[0] || b < 0 || b >= dims_[1] || k < 0 || k >= dims_[2]) continue;
-      const int nc = (a * dims_[1] + b) * dims_[2] + k;
+      int nIdx[3];
+      bool inside = true;
+      for (int d = 0; d < 3 && inside; ++d) {
+        nIdx[d] = cIdx[d] + o[d];
+        if (box.periodic(d)) {
+          nIdx[d] = (nIdx[d] + dims_[d]) % dims_[d];
+        } else {
+          inside = nIdx[d] >= 0 && nIdx[d] < dims_[d];
+        }
+      }
+      if (!inside) continue;
+      const int nc = (nIdx[0] * dims_[1] + nIdx[1]) * dims_[2] + nIdx[2];
       const int t0 = cellStart_[nc], t1 = cellStart_[nc + 1];
       if (t0 == t1) continue;
+      if (nc == c) {
+        // a periodic axis of one cell: the cell is its own neighbour
+        for (int s = s0; s < s1; ++s)
+          for (int t = s + 1; t < s1; ++t) test(s, t);
+        continue;
+      }
       for (int s = s0; s < s1; ++s)
         for (int t = t0; t < t1; ++t) test(s, t);
     }
+  }
+  if (duplicates) {
+    // neighbours met more than once: keep each pair once, in input order
+    std::sort(pairs_.begin(), pairs_.end(), [](const CandidatePair& a, const CandidatePair& b) {
+      return a.first != b.first ? a.first < b.first
+                                : (a.second != b.second ? a.second < b.second : a.image < b.image);
+    });
+    pairs_.erase(std::unique(pairs_.begin(), pairs_.end()), pairs_.end());
   }
   return pairs_;
 }

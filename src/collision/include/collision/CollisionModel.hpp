@@ -4,7 +4,9 @@
  *        overlap prefilter, certified distance, and the pair and wall models.
  *
  * Per call of forces() (one evaluation in a body sub-step):
- *  1. candidate pairs from bounding spheres and a cell list (PairSearch);
+ *  1. candidate pairs from bounding spheres and a cell list (PairSearch),
+ *     through the minimum image of the second body along periodic axes
+ *     (setPeriodicBox; the pair's histories are kept per image);
  *  2. prefilter: axis-aligned boxes of the bodies grown by their reach (the
  *     pair model's lubrication and the film gap), then the Jia et al.
  *     overlap test on the grown bodies;
@@ -39,7 +41,9 @@
 
 #include "collision/FilmCorrection.hpp"
 #include "collision/PairModel.hpp"
+#include "collision/PairKey.hpp"
 #include "collision/PairSearch.hpp"
+#include "collision/PeriodicBox.hpp"
 #include "collision/PlaneWall.hpp"
 #include "collision/WallModel.hpp"
 #include "ellipsoids/AutoDistance.hpp"
@@ -142,6 +146,9 @@ struct DampedPair {
 struct PairRecord {
   int first = 0;                  ///< body index
   int second = 0;                 ///< body index (> first), or -1 - wall index
+  /// the image of second the pair meets through: multiples of the periods
+  /// (PeriodicBox; all 0 without periodic axes and for walls)
+  std::array<int, 3> image{0, 0, 0};
   bool warm = false;              ///< has a warm-start direction (body pairs)
   Vec3 direction = Vec3::Zero();  ///< the pair's last distance direction
   Scalar contactTime = 0;         ///< > 0: in contact, with this contact time
@@ -172,6 +179,11 @@ class CollisionModel {
   /// the film correction, nullptr if none
   const FilmCorrection* filmCorrection() const { return film_.get(); }
   const std::vector<PlaneWall>& walls() const { return walls_; }
+
+  /// The periodic axes of the domain: pairs meet through the second body's
+  /// minimum image (none by default; walls are unaffected).
+  const PeriodicBox& periodicBox() const { return box_; }
+  void setPeriodicBox(const PeriodicBox& box) { box_ = box; }
 
   /**
    * Sub-steps a fluid step dt needs (>= 1): dt/subSteps <= T_c,min/subStepsPerContact
@@ -271,8 +283,8 @@ class CollisionModel {
   /// contacts; ownForce: this pair's last contact force on j
   Scalar sustainedLoad(const std::vector<CollisionBody>& bodies, int i, int j, const Vec3& n,
                        const Vec3& ownForce) const;
-  static std::uint64_t key(int i, int j) {
-    return (std::uint64_t(std::uint32_t(i)) << 32) | std::uint32_t(j);
+  static std::uint64_t key(int i, int j, int image = PeriodicBox::kNoImage) {
+    return PairKey::encode(i, j, image);
   }
   /// the lubrication coefficient of a damped pair at the gap h, and its
   /// integral over the gap from h0 to h1
@@ -281,8 +293,10 @@ class CollisionModel {
   /// the end relative normal speed of one lubricated pair (the others held)
   Scalar lubricatedEndSpeed(const DampedPair& p, Scalar uFree, Scalar wk, Scalar subDt,
                             Scalar uRef);
-  /// The interaction of bodies i, j (j < 0: wall -1 - j) at signed gap d.
-  void interact(const std::vector<CollisionBody>& bodies, int i, int j, Scalar gap,
+  /// The interaction of bodies i, j (j < 0: wall -1 - j) at signed gap d,
+  /// through the image of j with this code (shifted by shift; p2 on that image).
+  void interact(const std::vector<CollisionBody>& bodies, int i, int j, int image, const Vec3& shift,
+                Scalar gap,
                 const Vec3& n, const Vec3& p1, const Vec3& p2, Scalar contactTime, Scalar subDt,
                 std::vector<Vec3>& force, std::vector<Vec3>& torque);
 
@@ -292,6 +306,7 @@ class CollisionModel {
   std::unique_ptr<FilmCorrection> film_;
   std::vector<PlaneWall> walls_;
   PairSearch search_;
+  PeriodicBox box_;
   /// the settings' distanceMethod
   std::unique_ptr<ellipsoids::DistanceMethod> distance_;
   /// the penetration depth of overlapping pairs, whatever distance_ is

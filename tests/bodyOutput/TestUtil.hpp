@@ -138,7 +138,7 @@ inline std::vector<BodyRecord> randomRecords(std::size_t bodies, std::uint64_t s
   std::vector<BodyRecord> records(bodies);
   for (BodyRecord& r : records) {
     for (auto* v : {&r.centre, &r.velocity, &r.angularVelocity, &r.hydroForce, &r.hydroTorque,
-                    &r.collisionForce, &r.collisionTorque}) {
+                    &r.collisionForce, &r.collisionTorque, &r.unwrappedCentre}) {
       for (double& x : *v) x = value();
     }
     for (double& x : r.orientation) x = mantissa(rng);
@@ -160,6 +160,7 @@ inline void expectSameBits(const BodyRecord& a, const BodyRecord& b, const std::
   same(a.hydroTorque, b.hydroTorque, "hydroTorque");
   same(a.collisionForce, b.collisionForce, "collisionForce");
   same(a.collisionTorque, b.collisionTorque, "collisionTorque");
+  same(a.unwrappedCentre, b.unwrappedCentre, "unwrappedCentre");
   same(a.orientation, b.orientation, "orientation");
 }
 

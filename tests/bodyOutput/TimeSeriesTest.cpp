@@ -131,7 +131,7 @@ TEST_F(TimeSeriesTest, FileLayoutIsAsDocumented) {
   EXPECT_EQ(maxDims, (std::vector<hsize_t>{H5S_UNLIMITED}));
   EXPECT_TRUE(chunked);
   for (const char* name : {"centre", "velocity", "angularVelocity", "hydroForce", "hydroTorque",
-                           "collisionForce", "collisionTorque", "orientation"}) {
+                           "collisionForce", "collisionTorque", "unwrappedCentre", "orientation"}) {
     shape(name, dims, maxDims, chunked);
     const hsize_t width = std::string(name) == "orientation" ? 4 : 3;
     EXPECT_EQ(dims, (std::vector<hsize_t>{2, 3, width})) << name;
@@ -149,7 +149,7 @@ TEST_F(TimeSeriesTest, FileLayoutIsAsDocumented) {
   const hid_t attr = H5Aopen_by_name(f, "/", "formatVersion", H5P_DEFAULT, H5P_DEFAULT);
   ASSERT_GE(attr, 0);
   EXPECT_GE(H5Aread(attr, H5T_NATIVE_INT, &version), 0);
-  EXPECT_EQ(version, 1);
+  EXPECT_EQ(version, 2);
   H5Aclose(attr);
   H5Fclose(f);
 }

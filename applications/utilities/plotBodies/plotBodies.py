@@ -62,7 +62,7 @@ import math
 import os
 import sys
 
-FORMAT_VERSION = 1
+FORMAT_VERSIONS = (1, 2)  # 2 adds unwrappedCentre
 SERIES_DATASETS = ("time", "centre", "velocity", "angularVelocity", "hydroForce", "hydroTorque",
                    "collisionForce", "collisionTorque", "orientation")
 AXES = {"x": 0, "y": 1, "z": 2}
@@ -176,20 +176,22 @@ def read_series(path):
         if version is None:
             raise PlotError(f"{path}: no attribute 'formatVersion': not a body time series "
                             "written by bodyOutput")
-        if int(np.asarray(version).reshape(-1)[0]) != FORMAT_VERSION:
+        version = int(np.asarray(version).reshape(-1)[0])
+        if version not in FORMAT_VERSIONS:
             raise PlotError(f"{path}: formatVersion {version} is not supported (this script "
-                            f"reads version {FORMAT_VERSION})")
-        for name in ("bodyNames",) + SERIES_DATASETS:
+                            f"reads versions {', '.join(map(str, FORMAT_VERSIONS))})")
+        datasets = SERIES_DATASETS + (("unwrappedCentre",) if version >= 2 else ())
+        for name in ("bodyNames",) + datasets:
             if name not in f:
                 raise PlotError(f"{path}: dataset '{name}' is missing: not a body time series "
                                 "written by bodyOutput")
         names = [n.decode("utf-8") if isinstance(n, bytes) else str(n)
                  for n in f["bodyNames"][()]]
-        rows = min(f[name].shape[0] for name in SERIES_DATASETS)
+        rows = min(f[name].shape[0] for name in datasets)
         try:
             time = np.asarray(f["time"][:rows], dtype=float)
             data = {name: np.asarray(f[name][:rows], dtype=float)
-                    for name in SERIES_DATASETS if name != "time"}
+                    for name in datasets if name != "time"}
             semi_axes = np.asarray(f["semiAxes"][()], dtype=float) if "semiAxes" in f else None
         except OSError as e:
             raise PlotError(f"{path}: cannot read it ({e}); if a run is writing it, try again") \
@@ -199,6 +201,9 @@ def read_series(path):
         if values.ndim != 3 or values.shape[1:] != (len(names), width):
             raise PlotError(f"{path}: dataset '{name}' must be N x {len(names)} x {width}, "
                             f"got {' x '.join(map(str, values.shape))}")
+    # the path a body took: in a periodic box the centre jumps by a period at each wrap
+    if "unwrappedCentre" in data:
+        data["centre"] = data.pop("unwrappedCentre")
     if semi_axes is not None and (semi_axes.shape != (len(names), 3) or not (semi_axes > 0).all()):
         semi_axes = None  # the title and the side view need positive a, b, c for each body
     return names, time, data, semi_axes

@@ -512,7 +512,8 @@ void writeSurfacesVtk(const std::string& path, const std::vector<BodyShape>& bod
     out.text("\nCELL_DATA " + std::to_string(nt) +
              "\nSCALARS body int 1\nLOOKUP_TABLE default\n");
     for (std::size_t b = 0; b < bodies.size(); ++b) {
-      for (std::size_t t = 0; t < triangles.size(); ++t) out.put(static_cast<std::int32_t>(b));
+      const std::int32_t id = bodies[b].id >= 0 ? bodies[b].id : static_cast<std::int32_t>(b);
+      for (std::size_t t = 0; t < triangles.size(); ++t) out.put(id);
     }
     out.text("\nPOINT_DATA " + std::to_string(np) + "\nNORMALS Normals float\n");
     for (const BodyShape& body : bodies) {

@@ -59,21 +59,22 @@ namespace fs = std::filesystem;
 
 // ------------------------------------------------------------------ layout
 
-constexpr int kFieldCount = 8;  // the N x B x k datasets; `time` is separate
+constexpr int kFieldCount = 9;  // the N x B x k datasets; `time` is separate
 constexpr const char* kFieldNames[kFieldCount] = {
-    "centre",      "velocity",       "angularVelocity", "hydroForce",
-    "hydroTorque", "collisionForce", "collisionTorque", "orientation"};
+    "centre",         "velocity",        "angularVelocity", "hydroForce",     "hydroTorque",
+    "collisionForce", "collisionTorque", "unwrappedCentre", "orientation"};
 constexpr std::array<double, 3> BodyRecord::*kVectorMembers[kFieldCount - 1] = {
-    &BodyRecord::centre,      &BodyRecord::velocity,       &BodyRecord::angularVelocity,
-    &BodyRecord::hydroForce,  &BodyRecord::hydroTorque,    &BodyRecord::collisionForce,
-    &BodyRecord::collisionTorque};
+    &BodyRecord::centre,         &BodyRecord::velocity,       &BodyRecord::angularVelocity,
+    &BodyRecord::hydroForce,     &BodyRecord::hydroTorque,    &BodyRecord::collisionForce,
+    &BodyRecord::collisionTorque, &BodyRecord::unwrappedCentre};
 constexpr int kOrientationField = kFieldCount - 1;
 constexpr const char* kTimeName = "time";
 
 constexpr const char* kDescription =
     "spheroidFoam rigid-body time series (bodyOutput). N rows, B bodies. time (N); centre, "
-    "velocity, angularVelocity, hydroForce, hydroTorque, collisionForce, collisionTorque "
-    "(N x B x 3, world frame, torques about the centre); orientation (N x B x 4, unit quaternion "
+    "velocity, angularVelocity, hydroForce, hydroTorque, collisionForce, collisionTorque, "
+    "unwrappedCentre (N x B x 3, world frame, torques about the centre; the unwrapped centre is "
+    "the centre before wrapping into a periodic box); orientation (N x B x 4, unit quaternion "
     "w, x, y, z rotating body axes to world axes); bodyNames (B strings); semiAxes (B x 3, a, b, "
     "c along the body x, y, z axes); density (B). A row exists when every N-dataset has it.";
 

@@ -25,6 +25,9 @@ namespace bodyoutput {
 struct BodyShape {
   std::array<double, 3> semiAxes{}, centre{};
   std::array<double, 4> orientation{1, 0, 0, 0};
+  /// the index written in the cell data `body` (several shapes may be one body's images in a
+  /// periodic box); negative: the shape's position in the list
+  int id = -1;
 };
 
 /// Largest `subdivisions` accepted by writeSurfacesVtk (20 * 4^8 = 1.3 million triangles a body).

@@ -3,7 +3,7 @@
  * @brief HDF5 time series of rigid bodies (positions, orientations, velocities, forces), one row
  *        per time, written on the master rank and kept across restarts.
  *
- * File layout, format version 1 (serial HDF5 C API, all numbers 64-bit IEEE floats, little endian);
+ * File layout, format version 2 (serial HDF5 C API, all numbers 64-bit IEEE floats, little endian);
  * N = rows (times), B = bodies (B >= 1):
  *
  *   /time             N           simulation time of each row
@@ -14,6 +14,9 @@
  *   /hydroTorque      N x B x 3   hydrodynamic torque about the centre (world frame)
  *   /collisionForce   N x B x 3   collision (contact/lubrication) force (world frame)
  *   /collisionTorque  N x B x 3   collision torque about the centre    (world frame)
+ *   /unwrappedCentre  N x B x 3   the centre as if never moved by whole periods into a periodic
+ *                                 box (equal to centre without periodic axes): the path to
+ *                                 measure dispersion with
  *   /orientation      N x B x 4   unit quaternion (w, x, y, z) rotating body axes to world axes:
  *                                 x_world = centre + R(q) x_body
  *   /bodyNames        B           variable-length UTF-8 strings
@@ -55,13 +58,13 @@
 namespace bodyoutput {
 
 /// The format version written (and the only one read).
-constexpr int kTimeSeriesFormatVersion = 1;
+constexpr int kTimeSeriesFormatVersion = 2;
 
 /// One body at one time. Vectors in the world frame; orientation is the unit quaternion
 /// (w, x, y, z) rotating body axes to world axes.
 struct BodyRecord {
   std::array<double, 3> centre{}, velocity{}, angularVelocity{}, hydroForce{}, hydroTorque{},
-      collisionForce{}, collisionTorque{};
+      collisionForce{}, collisionTorque{}, unwrappedCentre{};
   std::array<double, 4> orientation{1, 0, 0, 0};
 };
 

@@ -87,6 +87,7 @@ boolList differsBetweenRanks(const List<uint64_t>& values)
 void Foam::immersedSpheroids::checkInsideMesh
 (
     const polyMesh& mesh,
+    const periodicDomain& domain,
     const PtrList<immersedBody>& bodies,
     const string& when
 )
@@ -107,7 +108,7 @@ void Foam::immersedSpheroids::checkInsideMesh
     }
     forAll(points, i)
     {
-        found[i] = mesh.findCell(points[i]) >= 0;
+        found[i] = mesh.findCell(domain.wrap(points[i])) >= 0;
     }
     Pstream::listCombineGather(found, orEqOp<bool>());
     Pstream::listCombineScatter(found);
@@ -141,8 +142,10 @@ void Foam::immersedSpheroids::checkInsideMesh
                     << boundBox(mesh.points(), true)
                     << "): the cells beyond the boundary are missing, so the"
                     << " fluid sees only part of it. A body may overlap only a"
-                    << " collision wall, by at most maxOverlap (periodic images"
-                    << " of bodies are not supported)" << nl << exit(FatalError);
+                    << " collision wall, by at most maxOverlap, or cross a"
+                    << " cyclic patch pair on opposite faces of the box"
+                    << " (periodic axes: " << domain.describe().c_str() << ")"
+                    << nl << exit(FatalError);
             }
         }
     }

@@ -61,7 +61,7 @@ void Foam::hydrodynamicLoads::update
             const label celli = cells[i];
             const vector p = (fractions[i]*V[celli])*u[celli];
             s.momentum += p;
-            s.angularMomentum += (C[celli] - X) ^ p;
+            s.angularMomentum += (C[celli] - body.cellShift(i) - X) ^ p;
         }
     }
 

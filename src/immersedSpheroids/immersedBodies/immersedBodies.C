@@ -278,6 +278,7 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
             false
         )
     ),
+    domain_(mesh),
     fluidDensity_(0),
     UName_(UNameDefault),
     penaltyRatio_(penaltyRatioDefault),
@@ -300,7 +301,7 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
             "fluidDensity", "U", "forcing", "penaltyRatio", "wallCellPenalty",
             "subSteps",
             "virtualMass", "bodies", "packing", "output", "collision",
-            "filmStabilisation", "filmGap", "viscosity"
+            "filmStabilisation", "filmGap", "viscosity", "meanFlow"
         })
     );
     fluidDensity_ = readPositive
@@ -356,7 +357,8 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
             mesh, forcing, wallCells == wallCellPenaltyType::soft,
             forcing == penaltyForcing::method::surfaceCorrected
           ? film.viscosity()/fluidDensity_
-          : 0
+          : 0,
+            domain_
         )
     );
     integrator_.reset
@@ -368,6 +370,7 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         )
     );
     ddtScheme_ = immersedSpheroids::ddtCoefficients::read(mesh, UName_);
+    meanFlow_.reset(new meanFlowForcing(properties_, mesh_, domain_));
 
     const bool restarted = readRestartState();
     if (!restarted)
@@ -376,6 +379,7 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         for (immersedBody& body : bodies_)
         {
             body.motion().initialise(body.state(), t);
+            body.wrapCentre(domain_);
         }
     }
     const string start
@@ -386,7 +390,7 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     );
     checkReplicatedState(bodies_, start);
     integrator_->checkOverlaps(bodies_, restarted);
-    checkInsideMesh(mesh, bodies_, start);
+    checkInsideMesh(mesh, domain_, bodies_, start);
     checkResolution(mesh, bodies_);
 
     output_.reset
@@ -407,7 +411,11 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     {
         Info<< ", virtual mass C_v " << virtualMass;
     }
-    Info<< ", wall cells " << wallCellPenaltyNames[wallCells];
+    Info<< ", wall cells " << wallCellPenaltyNames[wallCells]
+        << ", periodic axes " << domain_.describe().c_str()
+        << ", meanFlow "
+        << meanFlowForcing::conditionNames[meanFlow_->active()
+          ? meanFlowForcing::condition::zeroFlux : meanFlowForcing::condition::none];
     if (mag(integrator_->g()) > 0)
     {
         Info<< ", g " << integrator_->g();
@@ -461,9 +469,13 @@ void Foam::immersedBodies::update(const volVectorField& U)
 
     loads_.update(bodies_, *forcing_, U, fluidDensity_, solveDdt_, lastDeltaT_, debug);
     integrator_->advance(bodies_, t0, dt);
+    for (immersedBody& body : bodies_)
+    {
+        body.wrapCentre(domain_);
+    }
     const string afterStep("after the step to t = " + time.timeName());
     immersedSpheroids::checkReplicatedState(bodies_, afterStep);
-    immersedSpheroids::checkInsideMesh(mesh_, bodies_, afterStep);
+    immersedSpheroids::checkInsideMesh(mesh_, domain_, bodies_, afterStep);
     forcing_->updateCells(bodies_);
 
     const immersedSpheroids::ddtCoefficients ddt =
@@ -472,6 +484,7 @@ void Foam::immersedBodies::update(const volVectorField& U)
             ddtScheme_, time.timeIndex(), dt, time.deltaT0Value()
         );
     forcing_->assemble(bodies_, penaltyRatio_*dt, dt, ddt.c);
+    meanFlow_->update(bodies_, fluidDensity_, integrator_->g(), U, dt, ddt.c);
     solveDdt_ = ddt;
     lastDeltaT_ = dt;
     updateIndex_ = time.timeIndex();
@@ -487,6 +500,10 @@ void Foam::immersedBodies::update(const volVectorField& U)
         << " covered cells, " << returnReduce(forcing_->nTerms(), sumOp<label>())
         << " penalty terms, CPU update " << updateCpu_
         << " s, penalty (last step) " << lastPenaltyCpu << " s" << endl;
+    if (meanFlow_->active())
+    {
+        Info<< "immersedBodies: " << meanFlow_->describe(fluidDensity_).c_str() << endl;
+    }
 }
 
 
@@ -506,6 +523,7 @@ void Foam::immersedBodies::addPenalty(fvVectorMatrix& source) const
 {
     checkUpdated();
     forcing_->addTo(source);
+    meanFlow_->addTo(source);
 }
 
 
@@ -513,7 +531,9 @@ Foam::tmp<Foam::fvVectorMatrix>
 Foam::immersedBodies::penalty(const volVectorField& U) const
 {
     checkUpdated();
-    return forcing_->penalty(U);
+    tmp<fvVectorMatrix> tsource = forcing_->penalty(U);
+    meanFlow_->addTo(tsource.ref());
+    return tsource;
 }
 
 

@@ -60,13 +60,32 @@ void Foam::immersedBodiesOutput::writeSurfaces
 
     std::vector<bodyoutput::BodyShape> shapes;
     shapes.reserve(bodies_.bodies().size());
-    for (const immersedBody& body : bodies_.bodies())
+    forAll(bodies_.bodies(), bodyi)
     {
-        bodyoutput::BodyShape s;
-        s.semiAxes = toArray(body.semiAxes());
-        s.centre = toArray(body.state().centre);
-        s.orientation = toArray(body.state().orientation);
-        shapes.push_back(s);
+        // a body across a periodic face is drawn on each side (its images
+        // that overlap the mesh)
+        const immersedBody& body = bodies_.bodies()[bodyi];
+        const boundBox bb = body.bounds();
+        for (const vector& shift : body.images())
+        {
+            if
+            (
+                shift != vector::zero
+             && !boundBox(bb.min() + shift, bb.max() + shift).overlaps
+                (
+                    bodies_.domain().bounds()
+                )
+            )
+            {
+                continue;
+            }
+            bodyoutput::BodyShape s;
+            s.id = int(bodyi);
+            s.semiAxes = toArray(body.semiAxes());
+            s.centre = toArray(body.state().centre + shift);
+            s.orientation = toArray(body.state().orientation);
+            shapes.push_back(s);
+        }
     }
 
     const word name("surfaces_" + timeName + ".vtk");
@@ -213,6 +232,7 @@ void Foam::immersedBodiesOutput::append(const scalar t)
         r.hydroTorque = toArray(body.hydroTorque());
         r.collisionForce = toArray(body.collisionForce());
         r.collisionTorque = toArray(body.collisionTorque());
+        r.unwrappedCentre = toArray(body.unwrappedCentre());
         records.push_back(r);
     }
     try

@@ -275,51 +275,81 @@ Foam::point Foam::immersedBody::supportPoint(const vector& n) const
 void Foam::immersedBody::updateCells
 (
     const polyMesh& mesh,
-    const scalarField& cellRadius
+    const scalarField& cellRadius,
+    const periodicDomain& domain,
+    const scalar linkReach
 )
 {
     cells_.clear();
     fractions_.clear();
+    cellImages_.clear();
 
     const boundBox bb = bounds();
-    if (!bb.overlaps(mesh.bounds()))
+    for (direction d = 0; d < 3; ++d)
     {
-        return;
+        // an image would overlap the body itself (a cell covered twice)
+        if (domain.periodic(d) && !(bb.span()[d] < domain.period(d)))
+        {
+            FatalErrorInFunction
+                << "Body '" << name_ << "' spans " << bb.span()[d] << " along "
+                << vector::componentNames[d] << ", not less than the period "
+                << domain.period(d) << " of the periodic patch '"
+                << domain.patchName(d) << "': it would overlap its own image."
+                << " Use a larger box (or a smaller body)" << nl
+                << exit(FatalError);
+        }
     }
+    domain.images(bb, linkReach, images_);
 
     const symmTensor A = quadraticForm();
     const scalar lipschitz = 1/minSemiAxis();
     const pointField& C = mesh.cellCentres();
 
-    const labelList candidates = mesh.cellTree().findBox(treeBoundBox(bb));
-    for (const label celli : candidates)
+    forAll(images_, imagei)
     {
-        // |psi(x) - psi(C)| <= |x - C|/a_min: far cells need no clipping
-        const scalar psi = levelSet(C[celli], state_.centre, A);
-        const scalar reach = lipschitz*cellRadius[celli];
-        scalar alpha;
-        if (psi >= reach)
+        const vector& shift = images_[imagei];
+        const boundBox imageBox(bb.min() + shift, bb.max() + shift);
+        if (!imageBox.overlaps(mesh.bounds()))
         {
             continue;
         }
-        else if (psi <= -reach)
+        const point X = state_.centre + shift;
+        const labelList candidates = mesh.cellTree().findBox(treeBoundBox(imageBox));
+        for (const label celli : candidates)
         {
-            alpha = 1;
-        }
-        else
-        {
-            alpha = immersedSpheroids::cellSolidFraction
-            (
-                mesh, celli, state_.centre, A
-            );
-            if (alpha <= 0)
+            // |psi(x) - psi(C)| <= |x - C|/a_min: far cells need no clipping
+            const scalar psi = levelSet(C[celli], X, A);
+            const scalar reach = lipschitz*cellRadius[celli];
+            scalar alpha;
+            if (psi >= reach)
             {
                 continue;
             }
+            else if (psi <= -reach)
+            {
+                alpha = 1;
+            }
+            else
+            {
+                alpha = immersedSpheroids::cellSolidFraction(mesh, celli, X, A);
+                if (alpha <= 0)
+                {
+                    continue;
+                }
+            }
+            cells_.append(celli);
+            fractions_.append(alpha);
+            cellImages_.append(imagei);
         }
-        cells_.append(celli);
-        fractions_.append(alpha);
     }
+}
+
+
+void Foam::immersedBody::wrapCentre(const periodicDomain& domain)
+{
+    const point wrapped = domain.wrap(state_.centre);
+    unwrapShift_ += state_.centre - wrapped;
+    state_.centre = wrapped;
 }
 
 
@@ -337,6 +367,7 @@ void Foam::immersedBody::writeState(Ostream& os) const
     os.writeEntry("fluidAngularMomentum0", fluidAngularMomentum0_);
     os.writeEntry("acceleration", acceleration_);
     os.writeEntry("angularAcceleration", angularAcceleration_);
+    os.writeEntry("unwrapShift", unwrapShift_);
 }
 
 
@@ -369,6 +400,11 @@ void Foam::immersedBody::readState(const dictionary& dict)
     acceleration_ = readCheckedOrDefault<vector>(dict, "acceleration", Zero, vec);
     angularAcceleration_ =
         readCheckedOrDefault<vector>(dict, "angularAcceleration", Zero, vec);
+    unwrapShift_ = readCheckedOrDefault<vector>
+    (
+        dict, "unwrapShift", Zero,
+        "a vector (x y z): the whole periods the centre was moved by"
+    );
 }
 
 

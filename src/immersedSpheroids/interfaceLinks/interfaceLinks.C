@@ -134,6 +134,7 @@ void Foam::interfaceLinks::linkCell
     const labelList& own = mesh_.faceOwner();
     const labelList& nei = mesh_.faceNeighbour();
     const point& X = body.state().centre;
+    const DynamicList<vector>& images = body.images();
     const scalar nuByV = nu_/mesh_.V()[celli];
 
     for (const label facei : mesh_.cells()[celli])
@@ -160,20 +161,33 @@ void Foam::interfaceLinks::linkCell
             across = acrossCentres_[slot];
             weight = coupledWeights_[slot];
         }
-        if (immersedBody::levelSet(across, X, A) > 0)
+        // the image of the body whose inside holds the cell across (the
+        // body itself unless the domain is periodic)
+        label imagei = 0;
+        while
+        (
+            imagei < images.size()
+         && immersedBody::levelSet(across, X + images[imagei], A) > 0
+        )
+        {
+            ++imagei;
+        }
+        if (imagei == images.size())
         {
             continue;
         }
+        const vector& shift = images[imagei];
 
-        const scalar theta = crossingFraction(C[celli], across, X, A);
+        const scalar theta = crossingFraction(C[celli], across, X + shift, A);
         const point wall = C[celli] + theta*(across - C[celli]);
-        const vector Uw = body.state().velocityAt(wall);
-        const vector Uacross = body.state().velocityAt(across);
+        const vector Uw = body.state().velocityAt(wall - shift);
+        const vector Uacross = body.state().velocityAt(across - shift);
 
         // -g nu (1/theta - 1) u_P + g nu (U_w/theta - U_s(C_N)), capped:
         // coeff theta = g nu (1 - theta), source theta = g nu (U_w - theta U_s)
         penaltyTerm term;
         term.cell = celli;
+        term.shift = shift;
         const scalar g = nuByV*weight;
         if (g*(1 - theta) < maxCoeff*theta)
         {
@@ -242,11 +256,17 @@ void Foam::interfaceLinks::append
     // fluid cells whose neighbour across a coupled face is in the body
     if (acrossTree_.valid())
     {
-        const labelList found =
-            acrossTree_->findBox(treeBoundBox(body.bounds()));
-        for (const label slot : found)
+        const boundBox bb = body.bounds();
+        for (const vector& shift : body.images())
         {
-            visit(own[coupledFaces_[slot]]);
+            const labelList found = acrossTree_->findBox
+            (
+                treeBoundBox(bb.min() + shift, bb.max() + shift)
+            );
+            for (const label slot : found)
+            {
+                visit(own[coupledFaces_[slot]]);
+            }
         }
     }
 }

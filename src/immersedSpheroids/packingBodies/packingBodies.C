@@ -100,10 +100,11 @@ void Foam::immersedSpheroids::readPackingBodies
         << " (box " << L << ", volume fraction " << p.volumeFraction << ')' << endl;
     if (crossing)
     {
-        WarningInFunction
-            << crossing << " bodies of " << file << " cross the faces of the"
-            << " periodic packing box; only the part inside the mesh is"
-            << " represented (periodic images of bodies are not)" << endl;
+        // along the mesh's periodic axes they are represented through their
+        // images; a body beyond any other boundary stops the run
+        // (checkInsideMesh)
+        Info<< "immersedBodies: " << crossing << " bodies of " << file
+            << " cross the faces of the periodic packing box" << endl;
     }
 }
 

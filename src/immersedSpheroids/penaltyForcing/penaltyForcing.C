@@ -64,7 +64,8 @@ Foam::penaltyForcing::penaltyForcing
     const fvMesh& mesh,
     const method forcing,
     const bool softWallCells,
-    const scalar nu
+    const scalar nu,
+    const periodicDomain& domain
 )
 :
     mesh_(mesh),
@@ -72,6 +73,8 @@ Foam::penaltyForcing::penaltyForcing
     softWallCells_(softWallCells),
     wallCell_(mesh.nCells(), false),
     cellRadius_(immersedSpheroids::cellRadii(mesh)),
+    domain_(domain),
+    linkReach_(2*returnReduce(max(cellRadius_), maxOp<scalar>())),
     cellsFound_(false),
     eta_(0),
     bodyStart_(1, 0),
@@ -148,7 +151,8 @@ void Foam::penaltyForcing::collectCoveredCells
                 alphaVelocity.append(Zero);
             }
             alphaSum[slot] += fractions[i];
-            alphaVelocity[slot] += fractions[i]*body.state().velocityAt(C[celli]);
+            alphaVelocity[slot] +=
+                fractions[i]*body.state().velocityAt(C[celli] - body.cellShift(i));
             slots[i] = slot;
         }
     }
@@ -188,7 +192,8 @@ void Foam::penaltyForcing::addCutCellTerms
             penaltyTerm term;
             term.cell = celli;
             term.coeff = k*fractions[i]/alphaSum_[s];
-            term.source = term.coeff*body.state().velocityAt(C[celli]);
+            term.shift = body.cellShift(i);
+            term.source = term.coeff*body.state().velocityAt(C[celli] - term.shift);
             terms_.append(term);
         }
         bodyStart_[bodyi + 1] = terms_.size();
@@ -212,9 +217,11 @@ void Foam::penaltyForcing::addSurfaceCorrectedTerms
     {
         const immersedBody& body = bodies[bodyi];
         forms[bodyi] = body.quadraticForm();
-        for (const label celli : body.cells())
+        forAll(body.cells(), i)
         {
-            if (immersedBody::levelSet(C[celli], body.state().centre, forms[bodyi]) <= 0)
+            const label celli = body.cells()[i];
+            const point X = body.state().centre + body.cellShift(i);
+            if (immersedBody::levelSet(C[celli], X, forms[bodyi]) <= 0)
             {
                 ++inside_[celli];
                 solid_[celli] = true;
@@ -227,16 +234,19 @@ void Foam::penaltyForcing::addSurfaceCorrectedTerms
     forAll(bodies, bodyi)
     {
         const immersedBody& body = bodies[bodyi];
-        for (const label celli : body.cells())
+        forAll(body.cells(), i)
         {
-            if (immersedBody::levelSet(C[celli], body.state().centre, forms[bodyi]) <= 0)
+            const label celli = body.cells()[i];
+            const vector& shift = body.cellShift(i);
+            if (immersedBody::levelSet(C[celli], body.state().centre + shift, forms[bodyi]) <= 0)
             {
                 penaltyTerm term;
                 term.cell = celli;
                 term.coeff =
                     1/(cellEta(celli, eta, dt, ddtCoeff)*inside_[celli]);
-                term.source = term.coeff*body.state().velocityAt(C[celli]);
-                    terms_.append(term);
+                term.shift = shift;
+                term.source = term.coeff*body.state().velocityAt(C[celli] - shift);
+                terms_.append(term);
             }
         }
         links_->append(body, solid_, wallCell_, maxCoeff, maxWallCoeff, terms_);
@@ -330,7 +340,7 @@ void Foam::penaltyForcing::updateCells(PtrList<immersedBody>& bodies)
     {
         if (!cellsFound_ || body.motion().moves())
         {
-            body.updateCells(mesh_, cellRadius_);
+            body.updateCells(mesh_, cellRadius_, domain_, linkReach_);
         }
     }
     cellsFound_ = true;
@@ -387,6 +397,7 @@ void Foam::penaltyForcing::computeHeld
         cellCoeff_[term.cell] += term.coeff;
     }
     DynamicList<label> touched;
+    DynamicList<vector> touchedShift;
     forAll(bodies, bodyi)
     {
         const immersedBody& body = bodies[bodyi];
@@ -395,19 +406,22 @@ void Foam::penaltyForcing::computeHeld
             cellAlpha_[body.cells()[i]] = body.fractions()[i];
         }
         touched.clear();
+        touchedShift.clear();
         for (const penaltyTerm& term : bodyTerms(bodyi))
         {
             if (cellHeld_[term.cell] == 0)
             {
                 touched.append(term.cell);
+                touchedShift.append(term.shift);
             }
             cellHeld_[term.cell] += term.coeff/(cellCoeff_[term.cell] + ddtRate);
         }
         const point& X = body.state().centre;
-        for (const label celli : touched)
+        forAll(touched, t)
         {
+            const label celli = touched[t];
             const scalar v = max(cellHeld_[celli] - cellAlpha_[celli], scalar(0))*V[celli];
-            const vector r = C[celli] - X;
+            const vector r = C[celli] - touchedShift[t] - X;
             heldVolume_[bodyi] += v;
             heldMoment_[bodyi] += v*(magSqr(r)*symmTensor::I - sqr(r));
             cellHeld_[celli] = 0;
@@ -458,7 +472,7 @@ void Foam::penaltyForcing::bodyForce
     {
         const vector f = V[term.cell]*(term.coeff*U[term.cell] - term.source);
         force += f;
-        torque += (C[term.cell] - X) ^ f;
+        torque += (C[term.cell] - term.shift - X) ^ f;
     }
 }
 

@@ -213,7 +213,7 @@ void immersedBodiesTests::testSolidFraction
                 const tensor Ainv = R & diagTensor(1/sqr(abc.x()), 1/sqr(abc.y()), 1/sqr(abc.z())) & R.T();
                 const point& X = pl.offset;
 
-                body.updateCells(mesh, cellRadius);
+                body.updateCells(mesh, cellRadius, periodicDomain(mesh), 0);
                 const DynamicList<label>& cells = body.cells();
                 const DynamicList<scalar>& fractions = body.fractions();
 

@@ -241,6 +241,18 @@ Foam::collisionModels::contact::contact
             << "Invalid collision settings in " << dict.name() << ": "
             << err.what() << nl << exit(FatalIOError);
     }
+    // pairs meet through their minimum image along the mesh's periodic axes
+    const periodicDomain domain(mesh);
+    const point& lo = domain.bounds().min();
+    model_->setPeriodicBox
+    (
+        collision::PeriodicBox
+        (
+            collision::Vec3(lo.x(), lo.y(), lo.z()),
+            collision::Vec3(domain.period(0), domain.period(1), domain.period(2)),
+            {domain.periodic(0), domain.periodic(1), domain.periodic(2)}
+        )
+    );
 
     Info<< "immersedBodies: collision model " << dict.get<word>("type")
         << ": pair model " << pairName << ", wall model " << wallName
@@ -266,7 +278,7 @@ Foam::collisionModels::contact::contact
     {
         Info<< ' ' << w.name << " n = " << immersedSpheroids::toFoam(w.normal);
     }
-    Info<< " )" << endl;
+    Info<< " ), periodic axes " << domain.describe().c_str() << endl;
 }
 
 
@@ -441,27 +453,29 @@ void Foam::collisionModels::contact::report(const label nSubSteps)
 void Foam::collisionModels::contact::readHistory(const dictionary& dict)
 {
     // (first second warm dx dy dz contactTime springForce stiffness overlap
-    // fx fy fz); a 10-entry record has no contact force (zero), a 7-entry
-    // one starts the spring from k delta
+    // fx fy fz ix iy iz); i: the periodic image of second (multiples of the
+    // periods); a 13-entry record has image 0, a 10-entry one no contact
+    // force either (zero), a 7-entry one starts the spring from k delta
     const List<scalarList> records =
         immersedSpheroids::readCheckedOrDefault<List<scalarList>>
         (
             dict, "collisionPairs", List<scalarList>(),
             "a list of (first second warm dx dy dz contactTime springForce"
-            " stiffness overlap fx fy fz)"
+            " stiffness overlap fx fy fz ix iy iz)"
         );
     std::vector<collision::PairRecord> history;
     for (const scalarList& r : records)
     {
-        if (r.size() != 13 && r.size() != 10 && r.size() != 7)
+        if (r.size() != 16 && r.size() != 13 && r.size() != 10 && r.size() != 7)
         {
             immersedSpheroids::entryError
             (
                 dict, "collisionPairs",
                 "a record has " + std::to_string(r.size()) + " entries; allowed:"
-                " 13 (first second warm dx dy dz contactTime springForce"
-                " stiffness overlap fx fy fz), 10 (without the contact force)"
-                " or 7 (without the last six)"
+                " 16 (first second warm dx dy dz contactTime springForce"
+                " stiffness overlap fx fy fz ix iy iz), 13 (without the"
+                " image), 10 (without the contact force either) or 7"
+                " (without the last nine)"
             );
         }
         collision::PairRecord p;
@@ -476,9 +490,16 @@ void Foam::collisionModels::contact::readHistory(const dictionary& dict)
             p.stiffness = r[8];
             p.overlap = r[9];
         }
-        if (r.size() == 13)
+        if (r.size() >= 13)
         {
             p.contactForce = collision::Vec3(r[10], r[11], r[12]);
+        }
+        if (r.size() == 16)
+        {
+            for (int d = 0; d < 3; ++d)
+            {
+                p.image[d] = int(std::lround(r[13 + d]));
+            }
         }
         history.push_back(p);
     }
@@ -496,16 +517,17 @@ void Foam::collisionModels::contact::readHistory(const dictionary& dict)
 void Foam::collisionModels::contact::writeHistory(Ostream& os) const
 {
     const std::vector<collision::PairRecord> history = model_->history();
-    List<FixedList<scalar, 13>> records(label(history.size()));
+    List<FixedList<scalar, 16>> records(label(history.size()));
     forAll(records, i)
     {
         const collision::PairRecord& p = history[i];
-        records[i] = FixedList<scalar, 13>
+        records[i] = FixedList<scalar, 16>
         ({
             scalar(p.first), scalar(p.second), p.warm ? 1.0 : 0.0,
             p.direction.x(), p.direction.y(), p.direction.z(), p.contactTime,
             p.springForce, p.stiffness, p.overlap,
-            p.contactForce.x(), p.contactForce.y(), p.contactForce.z()
+            p.contactForce.x(), p.contactForce.y(), p.contactForce.z(),
+            scalar(p.image[0]), scalar(p.image[1]), scalar(p.image[2])
         });
     }
     os.writeEntry("collisionPairs", records);

@@ -259,13 +259,15 @@ def run_with_retry(case, plan, settings, attempts=5):
             raise
 
 
-def do_run(out, groups, force, quick):
+def do_run(out, groups, force, quick, phis=()):
     results = os.path.join(out, "results")
     csv_path = os.path.join(results, "runs.csv")
     os.makedirs(results, exist_ok=True)
     wanted = groups or [g for g in GROUPS if not g.startswith("straddle")]
     for group, name, s in campaign(quick):
         if not quick and not in_groups(group, wanted):
+            continue
+        if phis and not any(abs(s["phi"] - p) <= 1e-9 for p in phis):
             continue
         done = {r["name"] for r in read_csv(csv_path)}
         if name in done and not force:
@@ -333,6 +335,8 @@ def main():
     r.add_argument("--group", action="append", default=[])
     r.add_argument("--force", action="store_true")
     r.add_argument("--quick", action="store_true")
+    r.add_argument("--phi", type=float, action="append", default=[],
+                   help="only the runs of this solid fraction (repeatable)")
     r.add_argument("--out")
     p = sub.add_parser("plot")
     p.add_argument("--out")
@@ -358,7 +362,7 @@ def main():
                 raise UserError(f"unknown group(s) {', '.join(bad)} (groups: {', '.join(GROUPS)})")
             if args.quick and args.group:
                 raise UserError("--quick runs its own case: no --group with it")
-            csv_path = do_run(out, args.group, args.force, args.quick)
+            csv_path = do_run(out, args.group, args.force, args.quick, args.phi)
         import plotPeriodicArray
         plotPeriodicArray.main(out)
         if args.cmd == "run" and args.quick:

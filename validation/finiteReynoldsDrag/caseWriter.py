@@ -68,12 +68,16 @@ def check_fits(axes, axis, cpd):
                      f"cells of margin does not fit in the finest box {fine}")
 
 
-def build_mesh(case, cpd):
-    """blockMesh, then topoSet + refineMesh once per box; logs in case/."""
+def scaled_domain(scale):
+    """DOMAIN with every side moved scale times as far from the body."""
+    return tuple(scale * v for v in DOMAIN)
+
+
+def build_mesh(case, cpd, domain=DOMAIN):
+    """blockMesh over domain, then topoSet + refineMesh once per box; logs in case/."""
     h0, boxes = levels(cpd)
-    x0, x1, y0, y1, z0, z1 = DOMAIN
     refined_box_mesh(case, [
-        "--box", *map(str, DOMAIN), "--fine", *(f"{v:.12g}" for v in boxes[0]),
+        "--box", *map(str, domain), "--fine", *(f"{v:.12g}" for v in boxes[0]),
         "--h", f"{h0:.12g}", "--growth", "1.25", "--max-ratio", "8",
         "--patch", "yMin:symmetryPlane", "--patch", "yMax:symmetryPlane",
         "--patch", "zMin:symmetryPlane", "--patch", "zMax:symmetryPlane"])
@@ -128,10 +132,11 @@ def mesh_cells(case):
     raise RuntimeError(f"{case}/constant/polyMesh/owner: no nCells in its note")
 
 
-def write_case(case, ar, incidence_deg, re, cpd, end_time, courant=1.0):
+def write_case(case, ar, incidence_deg, re, cpd, end_time, courant=1.0, domain=DOMAIN):
     """Write and mesh case/ for a body of aspect ratio ar whose symmetry axis makes
     incidence_deg with the stream (x), at Re = U D_eq/nu, cpd cells per D_eq,
-    Euler steps dt = courant h / U up to end_time (D_eq/U units).
+    Euler steps dt = courant h / U up to end_time (D_eq/U units), in domain
+    (x0 x1 y0 y1 z0 z1, D_eq units; the refinement boxes stay those of BOXES).
     Returns the time step, the step count and the cell count."""
     h = 1.0 / cpd
     axes = semi_axes(ar)
@@ -312,5 +317,5 @@ boundaryField
     }}{sides}
 }}
 """)
-    build_mesh(case, cpd)
+    build_mesh(case, cpd, domain)
     return dt, steps, mesh_cells(case)

@@ -67,12 +67,13 @@ def read_force(case):
         return f["time"][:n], f["hydroForce"][:n, 0, :]
 
 
-def run_case(case, ar, incidence, re, cpd, end_time=END_TIME):
+def run_case(case, ar, incidence, re, cpd, end_time=END_TIME, domain=caseWriter.DOMAIN):
     """Write, mesh and run one case in the folder case (replaced); returns its figures
     and the history (t, C_D, C_L)."""
     if os.path.exists(case):
         subprocess.run(["rm", "-rf", case], check=True)
-    dt, steps, cells = caseWriter.write_case(case, ar, incidence, re, cpd, end_time)
+    dt, steps, cells = caseWriter.write_case(case, ar, incidence, re, cpd, end_time,
+                                             domain=domain)
     print(f"{os.path.basename(case)}: {cells} cells, dt {dt:.4g}, {steps} steps", flush=True)
     rc = run_logged(["nice", "-n", "10", "pimpleFoam"], case, "log.solver")
     if rc != 0:

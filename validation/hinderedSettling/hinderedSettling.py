@@ -26,9 +26,9 @@ run: the suspensions of the campaign in run/<name>/, one solver at a time (seria
 array: the check of the zero-flux frame, a simple cubic array of spheres settling in Stokes
      flow against the fixed array of ../periodicArray on the same mesh (results/array.csv;
      about 20 s).
-held: the moving sphere against the fixed one at Re_t: the free sphere of single-c8-L4
-     against the same sphere held fixed in the same box and mesh with its settling speed
-     held as the superficial velocity (results/held.csv; about 3 min).
+held: the moving sphere against the fixed one at Re_t: the free sphere of single-c8-L4 and
+     single-c12-L4 against the same sphere held fixed in the same box and mesh with its
+     settling speed held as the superficial velocity (results/held.csv; about 3 and 10 min).
 plot: results/table.md, results/metrics.json, hindrance.png and settling.png.
 quick: the smoke version (12 spheres in a 4 D box at 4 cells per D, 4 D/V_g, about 20 s;
      the Schiller-Naumann terminal velocity stands in for the reference run) into DIR
@@ -93,7 +93,7 @@ ARRAY_STOKES_SPEED = 0.02  # (rho_p - rho_f) g D^2/(18 mu) of the sphere alone
 ARRAY_END = 3.0            # D^2/nu: about 20 relaxation times of the sphere and the box
 ARRAY_RUNS = [(phi, cpd) for phi in (0.125, 0.216) for cpd in (8, 12)]
 # the moving sphere against the fixed one at Re_t (do_held)
-HELD_FREE = "single-c8-L4"
+HELD_FREE = ("single-c8-L4", "single-c12-L4")
 HELD_FIELDS = ["name", "free", "W", "Re", "force_over_weight", "force_change", "difference_pct",
                "slope", "velocity_equivalent_pct", "cells", "steps", "cpu_s", "host", "date",
                "commit"]
@@ -113,8 +113,9 @@ def campaign():
              ("phi0.1-c8-L8-s1", dict(phi=0.1, cpd=8, L=8, seed=1)),
              ("phi0.1-c12-L6-s1", dict(phi=0.1, cpd=12, L=6, seed=1))]
     # one sphere per box (a simple cubic array settling): how much its own images hinder it
-    runs += [(f"single-c8-L{L}", dict(phi=round(math.pi / (6 * L ** 3), 8), cpd=8, L=L, seed=1))
-             for L in (4, 6)]
+    runs += [(f"single-c{cpd}-L{L}", dict(phi=round(math.pi / (6 * L ** 3), 8), cpd=cpd, L=L,
+                                           seed=1))
+             for cpd, L in ((8, 4), (8, 6), (12, 4))]
     return runs
 
 
@@ -545,8 +546,9 @@ def do_array(args):
 
 
 def do_held(args):
-    """The moving sphere against the fixed one at Re_t: the free sphere of single-c8-L4 (one
-    sphere per 4 D box, meanFlow zeroFlux) settles at W (its runs.csv row); in its frame that
+    """The moving sphere against the fixed one at Re_t, at 8 and 12 cells per D: the free
+    sphere of single-c<cpd>-L4 (one sphere per 4 D box, meanFlow zeroFlux) settles at W (its
+    runs.csv row; runs not made yet are skipped); in its frame that
     is the fixed sphere in the same box and mesh with the superficial velocity W held along z
     (meanVelocityForce, no gravity). Galilean invariance makes the fixed sphere's whole force
     (the held gradient's share included, as in ../periodicArray) the free sphere's net weight:
@@ -555,18 +557,28 @@ def do_held(args):
     the local slope dln F/dln U of the Schiller-Naumann law at Re = W D/nu."""
     import summarise
     results = os.path.join(args.out, "results")
-    free = {r["name"]: r for r in read_csv(os.path.join(results, "runs.csv"))}.get(HELD_FREE)
-    if free is None:
-        sys.exit(f"hinderedSettling held: no row {HELD_FREE} in {results}/runs.csv; run "
-                 f"`hinderedSettling.py run --only {HELD_FREE}` first")
+    runs = {r["name"]: r for r in read_csv(os.path.join(results, "runs.csv"))}
+    rows = []
+    for free_name in HELD_FREE:
+        free = runs.get(free_name)
+        if free is None:
+            print(f"hinderedSettling held: no row {free_name} in {results}/runs.csv (run "
+                  f"`hinderedSettling.py run --only {free_name}`): skipped", flush=True)
+            continue
+        rows.append(held_run(args.out, free_name, free, summarise))
+    write_csv(os.path.join(results, "held.csv"), rows, HELD_FIELDS)
+
+
+def held_run(out, free_name, free, summarise):
+    """The held sphere of the free run free (its runs.csv row): its held.csv row."""
     w, L, cpd = float(free["w"]), float(free["L"]), int(free["cpd"])
     name = f"held-c{cpd}-L{L:g}"
-    case = os.path.join(args.out, "run", name)
+    case = os.path.join(out, "run", name)
     if os.path.exists(case):
         shutil.rmtree(case)
     write_case(case, float(free["phi"]), cpd, L, 1, END_TIME, write_interval=END_TIME,
                single=dict(n=int(round(cpd * L)), nu=NU, g=0.0, motion="fixed", ubar=w))
-    print(f"{name}: the sphere of {HELD_FREE} held fixed, superficial velocity {w:.6g} V_g",
+    print(f"{name}: the sphere of {free_name} held fixed, superficial velocity {w:.6g} V_g",
           flush=True)
     rc = run_logged(["nice", "-n", "10", "immersedSpheroidFoam"], case, SOLVER_LOG)
     if rc != 0 or not finished(case, END_TIME):
@@ -580,16 +592,16 @@ def do_held(args):
     re = w / NU
     x = 0.15 * re ** 0.687
     slope = 1.0 + 0.687 * x / (1.0 + x)
-    row = dict(name=name, free=HELD_FREE, W=f"{w:.6f}", Re=f"{re:.4f}",
+    row = dict(name=name, free=free_name, W=f"{w:.6f}", Re=f"{re:.4f}",
                force_over_weight=f"{f_mean / weight:.6f}",
                force_change=f"{(fz[-1] - f_before) / weight:.2e}",
                difference_pct=f"{100 * (f_mean / weight - 1):.4f}", slope=f"{slope:.4f}",
                velocity_equivalent_pct=f"{100 * ((weight / f_mean) ** (1 / slope) - 1):.4f}",
                cells=mesh_cells(case), steps=len(t), cpu_s=f"{solver_cpu(case):.0f}",
                **provenance())
-    write_csv(os.path.join(results, "held.csv"), [row], HELD_FIELDS)
     print(f"  -> F/W {row['force_over_weight']} ({row['difference_pct']} %): the free sphere "
           f"settles {row['velocity_equivalent_pct']} % off the held one's speed", flush=True)
+    return row
 
 
 def do_quick(args):

@@ -84,8 +84,9 @@ def metrics_of(runs, results):
     if diffs:
         m["settling_array_max_abs_difference_pct"] = round(max(diffs), 4)
     for r in read_csv(os.path.join(results, "held.csv")):
-        m["moving_vs_fixed_force_difference_pct"] = round(float(r["difference_pct"]), 3)
-        m["moving_vs_fixed_speed_difference_pct"] = round(
+        cpd = r["name"].split("-")[1]
+        m[f"moving_vs_fixed_force_difference_pct_{cpd}"] = round(float(r["difference_pct"]), 3)
+        m[f"moving_vs_fixed_speed_difference_pct_{cpd}"] = round(
             -float(r["velocity_equivalent_pct"]), 3)
     wide = hs.terminal_re(results, 8, 2.0)
     base = hs.terminal_re(results, 8)
@@ -188,8 +189,8 @@ def held_table(results):
     if not rows:
         return []
     md = ["## The moving sphere against the fixed one at Re_t", "",
-          "The free sphere of `single-c8-L4` (one sphere per 4 D box, `meanFlow zeroFlux`) "
-          "settles at W; the same sphere held fixed in the same box and mesh with the "
+          "The free sphere of `single-c8-L4` or `single-c12-L4` (one sphere per 4 D box, "
+          "`meanFlow zeroFlux`) settles at W; the same sphere held fixed in the same box and mesh with the "
           "superficial velocity W held along z (meanVelocityForce) carries the force F. By "
           "Galilean invariance F equals the net weight W_net; F/W_net - 1 is the difference of "
           "the moving sphere's coupling against the fixed sphere's (the reference V_t is a "

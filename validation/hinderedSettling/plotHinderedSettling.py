@@ -190,8 +190,9 @@ def held_table(results):
         return []
     md = ["## The moving sphere against the fixed one at Re_t", "",
           "The free sphere of `single-c8-L4` or `single-c12-L4` (one sphere per 4 D box, "
-          "`meanFlow zeroFlux`) settles at W; the same sphere held fixed in the same box and mesh with the "
-          "superficial velocity W held along z (meanVelocityForce) carries the force F. By "
+          "`meanFlow zeroFlux`) settles at W; the same sphere held fixed in the same box and "
+          "mesh with the superficial velocity W held along z (meanVelocityForce) carries the "
+          "force F. By "
           "Galilean invariance F equals the net weight W_net; F/W_net - 1 is the difference of "
           "the moving sphere's coupling against the fixed sphere's (the reference V_t is a "
           "fixed sphere), and the speed the free sphere would have with the fixed sphere's "

@@ -125,6 +125,8 @@ def set_galileo(results, ga):
     global GA, NU
     import json
     path = os.path.join(results, PARAMETERS)
+    if ga is not None and not (math.isfinite(ga) and ga > 0):
+        sys.exit(f"hinderedSettling: --ga {ga:g}: the Galileo number must be finite and > 0")
     recorded = json.load(open(path))["Ga"] if os.path.exists(path) else None
     if ga is not None and recorded is not None and ga != recorded:
         sys.exit(f"hinderedSettling: {path} holds Ga {recorded:g}, not --ga {ga:g}; use another "
@@ -214,9 +216,17 @@ def do_reference(args):
         with open(path + ".lock", "w") as lock:
             fcntl.flock(lock, fcntl.LOCK_EX)
             write_csv(path, read_csv(path) + [out], REF_FIELDS)
+    rows = reference_rows(results, args.cpd, args.domain_scale)
+    miss = min(abs(balance(r["Re"], r["C_D"]) - 1) for r in rows)
     re_t = terminal_re(results, args.cpd, args.domain_scale)
     print(f"terminal Re at {args.cpd} cells/D (domain x{args.domain_scale:g}): {re_t:.5f}, "
           f"V_t = {re_t * NU:.5f} V_g")
+    if miss >= BALANCE_TOLERANCE:
+        sys.exit(f"hinderedSettling reference: not converged after {len(rows)} runs at "
+                 f"{args.cpd} cells/D (domain x{args.domain_scale:g}): the nearest run's "
+                 f"(3/4) C_D Re^2/Ga^2 is {miss:.2e} from 1, tolerance {BALANCE_TOLERANCE:g}; "
+                 f"the terminal Re above is interpolated (call reference again for another "
+                 f"three runs)")
 
 
 # ---------------------------------------------------------------------------

@@ -56,6 +56,10 @@ const Enum<wallCellPenaltyType> wallCellPenaltyNames
 });
 constexpr wallCellPenaltyType wallCellPenaltyDefault = wallCellPenaltyType::soft;
 
+//- The penalty in the cells across a face from another body's terms, where
+//  two bodies touch (the same two choices)
+constexpr wallCellPenaltyType contactCellPenaltyDefault = wallCellPenaltyType::soft;
+
 //- Stop the run if a keyword stands twice in one dictionary of the file
 //  (two bodies of one name, a setting given twice): OpenFOAM keeps the
 //  last silently. The file is read again with duplicates as errors (a
@@ -299,7 +303,7 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         wordList
         ({
             "fluidDensity", "U", "forcing", "penaltyRatio", "wallCellPenalty",
-            "subSteps",
+            "contactCellPenalty", "subSteps",
             "virtualMass", "bodies", "packing", "output", "collision",
             "filmStabilisation", "filmGap", "viscosity", "meanFlow"
         })
@@ -323,6 +327,14 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         wallCellPenaltyDefault,
         "the penalty time scale in the cells on a wall patch: soft, eta"
         " at least the fluid's own time scale there; stiff, eta everywhere"
+    );
+    const wallCellPenaltyType contactCells = readOptionalEnum
+    (
+        properties_, "contactCellPenalty", wallCellPenaltyNames,
+        contactCellPenaltyDefault,
+        "the penalty in the cells across a face from another body's cells"
+        " (two bodies touching): soft, at most the fluid's own rate c/dt;"
+        " stiff, 1/eta"
     );
     const label subSteps = readOptionalInRange<label>
     (
@@ -355,6 +367,7 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         new penaltyForcing
         (
             mesh, forcing, wallCells == wallCellPenaltyType::soft,
+            contactCells == wallCellPenaltyType::soft,
             forcing == penaltyForcing::method::surfaceCorrected
           ? film.viscosity()/fluidDensity_
           : 0,
@@ -412,6 +425,7 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         Info<< ", virtual mass C_v " << virtualMass;
     }
     Info<< ", wall cells " << wallCellPenaltyNames[wallCells]
+        << ", contact cells " << wallCellPenaltyNames[contactCells]
         << ", periodic axes " << domain_.describe().c_str()
         << ", meanFlow "
         << meanFlowForcing::conditionNames[meanFlow_->active()

@@ -7,6 +7,7 @@ License
 
 #include "penaltyForcing.H"
 #include "wallPolyPatch.H"
+#include "syncTools.H"
 #include "processCpuTime.H"
 #include "cellSolidFraction.H"
 #include "diagTensor.H"
@@ -64,6 +65,7 @@ Foam::penaltyForcing::penaltyForcing
     const fvMesh& mesh,
     const method forcing,
     const bool softWallCells,
+    const bool softContactCells,
     const scalar nu,
     const periodicDomain& domain
 )
@@ -71,6 +73,7 @@ Foam::penaltyForcing::penaltyForcing
     mesh_(mesh),
     method_(forcing),
     softWallCells_(softWallCells),
+    softContactCells_(softContactCells),
     wallCell_(mesh.nCells(), false),
     cellRadius_(immersedSpheroids::cellRadii(mesh)),
     domain_(domain),
@@ -294,6 +297,10 @@ void Foam::penaltyForcing::softenSharedCells
             owner = owner == -1 || owner == bodyi ? bodyi : -2;
         }
     }
+    if (softContactCells_)
+    {
+        markContactZone();
+    }
     const scalar maxSharedCoeff = ddtCoeff/dt;
     for (penaltyTerm& term : terms_)
     {
@@ -307,6 +314,49 @@ void Foam::penaltyForcing::softenSharedCells
     for (const penaltyTerm& term : terms_)
     {
         termBody_[term.cell] = -1;
+    }
+}
+
+
+void Foam::penaltyForcing::markContactZone()
+{
+    // Two cells across a face that carry the terms of two different bodies
+    // (the bodies touch or overlap between their centres) impose rigid
+    // velocities whose normal components differ by the pair's approach
+    // speed: the flux through the face cannot match both, and with stiff
+    // terms the pressure resolving it is of order rho_f u_n h/eta, an
+    // explicit coupling of the pair's relative motion far above the bodies'
+    // inertia. Both cells are marked shared (-2) and so capped at c/dt.
+    const labelUList& own = mesh_.faceOwner();
+    const labelUList& nei = mesh_.faceNeighbour();
+    const label nInternal = mesh_.nInternalFaces();
+    labelList nbrBody;
+    syncTools::swapBoundaryCellList(mesh_, termBody_, nbrBody);
+    DynamicList<label> marked;
+    for (const penaltyTerm& term : terms_)
+    {
+        const label celli = term.cell;
+        const label bodyi = termBody_[celli];
+        if (bodyi < 0)
+        {
+            continue;
+        }
+        for (const label facei : mesh_.cells()[celli])
+        {
+            const label other =
+                facei < nInternal
+              ? termBody_[own[facei] == celli ? nei[facei] : own[facei]]
+              : nbrBody[facei - nInternal];
+            if (other >= 0 && other != bodyi)
+            {
+                marked.append(celli);
+                break;
+            }
+        }
+    }
+    for (const label celli : marked)
+    {
+        termBody_[celli] = -2;
     }
 }
 

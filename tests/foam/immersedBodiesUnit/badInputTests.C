@@ -169,6 +169,12 @@ void immersedBodiesTests::testBadInput(const Time& runTime, const fvMesh& mesh)
         {"'wallCellPenalty'", "soft", "stiff", "hard", fname},
         "wallCellPenalty not soft or stiff"
     );
+    expectFatalIOError
+    (
+        construct("contactCellPenalty firm; " + withBody(goodBody)),
+        {"'contactCellPenalty'", "soft", "stiff", "firm", fname},
+        "contactCellPenalty not soft or stiff"
+    );
     // Collision settings out of range: the message shows the range of the
     // collision core's constants, which validate() checks too
     expectFatalIOError

@@ -49,7 +49,7 @@ TEST(ModelFactory, SpringDashpotHasNoLubricationReachTheLubricatedOneHas) {
   EXPECT_EQ(lubricatedWall->lubrication().activation(), p.lubrication.wallActivation);
   // the law of a sphere at a wall inside its activation gap acts
   const Scalar a = 1e-3;
-  EXPECT_GT(lubricatedWall->lubrication().gapLaw(a, std::numeric_limits<Scalar>::infinity())
+  EXPECT_GT(lubricatedWall->lubrication().gapLaw(a, std::numeric_limits<Scalar>::infinity(), a)
                 .coefficient(0.01 * a),
             0);
   // a lubricated model needs the viscosity from its caller

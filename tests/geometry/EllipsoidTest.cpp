@@ -152,6 +152,61 @@ TEST(Ellipsoid, ProlateSpheroidEquatorAndPole) {
   EXPECT_NEAR(e.minGaussianRadius(), b * b / a, 1e-13);
 }
 
+TEST(Ellipsoid, CurvatureTensorHasThePrincipalCurvaturesOnTheTangentPlane) {
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<Scalar> u(0.2, 3);
+  for (int k = 0; k < 20; ++k) {
+    const Ellipsoid e(Vec3(u(rng), u(rng), u(rng)), Vec3(u(rng), -u(rng), 0.5), randomRotation(rng));
+    for (int i = 0; i < 50; ++i) {
+      const Vec3 m = randomUnit(rng);
+      const Vec3 x = e.support(m);
+      const ellipsoids::Mat3 S = e.curvatureTensor(x);
+      const auto r = e.curvatureRadii(x);
+      const Scalar scale = 1 / r.rMin;
+      EXPECT_LT((S - S.transpose()).norm(), 1e-14 * scale);
+      EXPECT_LT((S * m).norm(), 1e-12 * scale);
+      // trace and tangent determinant: k1 + k2 and k1 k2
+      const Scalar trace = S.trace();
+      const Scalar det2 = (trace * trace - (S * S).trace()) / 2;
+      EXPECT_NEAR(trace, 1 / r.rMin + 1 / r.rMax, 1e-11 * scale);
+      EXPECT_NEAR(det2, 1 / (r.rMin * r.rMax), 1e-10 * scale * scale);
+    }
+  }
+}
+
+TEST(Ellipsoid, CurvatureTensorGivesTheSurfaceToSecondOrder) {
+  // the surface along -m at a tangent offset t lies at depth t^T S t/2 + O(|t|^3)
+  std::mt19937_64 rng(18);
+  const Ellipsoid e(Vec3(2, 1, 0.7), Vec3(0.3, -0.2, 1), randomRotation(rng));
+  for (int i = 0; i < 20; ++i) {
+    const Vec3 m = randomUnit(rng);
+    const Vec3 x = e.support(m);
+    const ellipsoids::Mat3 S = e.curvatureTensor(x);
+    Vec3 t = randomUnit(rng);
+    t = (t - t.dot(m) * m).normalized();
+    Scalar previous = 0;
+    for (Scalar len : {1e-2, 5e-3}) {
+      const auto hit = e.intersectLine(x + len * t, -m);
+      ASSERT_EQ(hit.count, 2);
+      const Scalar error = std::abs(hit.tEnter - len * len * t.dot(S * t) / 2);
+      EXPECT_LT(error, 2 * len * len * len);
+      if (previous > 0) EXPECT_LT(error, previous / 6);  // third order: 8 x smaller
+      previous = error;
+    }
+  }
+}
+
+TEST(Ellipsoid, ProlateCurvatureTensorOnTheEquator) {
+  // prolate (a, b, b) at (0, b, 0): curvature 1/b around the axis, b/a^2 along it
+  const Scalar a = 3, b = 1;
+  const Ellipsoid e(Vec3(a, b, b), Vec3::Zero(), Quat::Identity());
+  const ellipsoids::Mat3 S = e.curvatureTensor(Vec3(0, b, 0));
+  EXPECT_NEAR(S(0, 0), b / (a * a), 1e-14);
+  EXPECT_NEAR(S(2, 2), 1 / b, 1e-14);
+  EXPECT_NEAR(S(1, 1), 0, 1e-14);
+  EXPECT_NEAR(S(0, 2), 0, 1e-14);
+}
+
 TEST(Ellipsoid, SurfaceExtremaOfCurvatureBoundEverySurfacePoint) {
   std::mt19937_64 rng(7);
   for (int k = 0; k < 20; ++k) {

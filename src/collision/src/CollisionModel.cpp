@@ -1,4 +1,5 @@
 #include "collision/CollisionModel.hpp"
+#include "collision/GapParaboloid.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -402,6 +403,11 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
   if (lubricating || film) {
     const Scalar r1 = b1.shape.curvatureRadii(p1).gaussian;
     const Scalar r2 = wall ? kInf : bodies[j].shape.curvatureRadii(p2 - shift).gaussian;
+    const Scalar squeezeRadius =
+        GapParaboloid::fromCurvatureTensors(
+            b1.shape.curvatureTensor(p1),
+            wall ? Mat3::Zero() : Mat3(bodies[j].shape.curvatureTensor(p2 - shift)), n)
+            .squeezeRadius();
     DampedPair pair;
     pair.first = i;
     pair.second = j;
@@ -416,14 +422,13 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
       pair.lubricated = true;
       pair.radius1 = r1;
       pair.radius2 = r2;
-      pair.law = model.lubrication().gapLaw(r1, r2);
+      pair.law = model.lubrication().gapLaw(r1, r2, squeezeRadius);
       pair.lubrication = pair.law.coefficient(gap);
       pair.startPrimitive = pair.law.primitive(gap);
       if (pair.lubrication > 0) ++statistics_.lubricated;
     }
     if (film) {
-      const Scalar r = wall ? r1 : r1 * r2 / (r1 + r2);
-      pair.film = film_->coefficient(r, gap, filmGap);
+      pair.film = film_->coefficient(squeezeRadius, gap, filmGap);
       ++statistics_.filmPairs;
     }
     if (recordDamping_ && (pair.lubricated || pair.film > 0)) damped_.push_back(pair);

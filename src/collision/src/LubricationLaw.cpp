@@ -94,13 +94,22 @@ Scalar wallLubricationIntegral(Scalar h0, Scalar h1, Scalar a, Scalar viscosity,
 }
 
 LubricationGapLaw::LubricationGapLaw(Scalar a1, Scalar a2, Scalar viscosity, const LubricationParameters& p)
+    : LubricationGapLaw(a1, a2, viscosity, p, std::isfinite(a2) ? a1 * a2 / (a1 + a2) : a1) {}
+
+LubricationGapLaw::LubricationGapLaw(Scalar a1, Scalar a2, Scalar viscosity, const LubricationParameters& p,
+                                     Scalar squeezeRadius)
     : wall_(!std::isfinite(a2)), force_(6 * kPi * viscosity * a1), sat_(p.saturation) {
+  // the leading term of lambda, A/x, is 6 pi mu a1 A/x = 6 pi mu R_s^2/h with
+  // R_s the spheres' squeeze radius: scaled by (R*/R_s)^2 it is the paraboloid's
+  const Scalar sphereRadius = wall_ ? a1 : a1 * a2 / (a1 + a2);
+  const Scalar leading = (squeezeRadius / sphereRadius) * (squeezeRadius / sphereRadius);
   if (wall_) {
+    A_ = leading;
     scale_ = 1 / a1;
     act_ = p.wallActivation;
   } else {
     const PairTerms t = pairTerms(a1, a2);
-    A_ = t.A;
+    A_ = leading * t.A;
     B_ = t.B;
     C_ = t.C;
     scale_ = 2 / (a1 + a2);
@@ -112,13 +121,13 @@ LubricationGapLaw::LubricationGapLaw(Scalar a1, Scalar a2, Scalar viscosity, con
 }
 
 Scalar LubricationGapLaw::lambda(Scalar x) const {
-  if (wall_) return wallLubricationLambda(x);
+  if (wall_) return wallLubricationLambda(x) + (A_ - 1) / x;
   const Scalar lnInv = -std::log(x);
   return A_ / x + B_ * lnInv + C_ * x * lnInv;
 }
 
 Scalar LubricationGapLaw::lambdaPrimitive(Scalar x) const {
-  if (wall_) return wallLambdaPrimitive(x);
+  if (wall_) return wallLambdaPrimitive(x) + (A_ - 1) * std::log(x);
   return pairLambdaPrimitive(x, PairTerms{A_, B_, C_});
 }
 

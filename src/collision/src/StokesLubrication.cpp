@@ -20,8 +20,8 @@ Scalar StokesLubrication::activation() const {
   return wall_ ? parameters_.wallActivation : parameters_.pairActivation;
 }
 
-LubricationGapLaw StokesLubrication::gapLaw(Scalar r1, Scalar r2) const {
-  return LubricationGapLaw(r1, r2, viscosity_, parameters_);
+LubricationGapLaw StokesLubrication::gapLaw(Scalar r1, Scalar r2, Scalar squeezeRadius) const {
+  return LubricationGapLaw(r1, r2, viscosity_, parameters_, squeezeRadius);
 }
 
 }  // namespace collision

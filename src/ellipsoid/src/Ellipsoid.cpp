@@ -168,6 +168,15 @@ CurvatureRadii Ellipsoid::curvatureRadii(const Vec3& surfacePoint) const {
   return radii;
 }
 
+Mat3 Ellipsoid::curvatureTensor(const Vec3& surfacePoint) const {
+  const Vec3 g = quadratic_ * (projectRadially(surfacePoint) - centre_);
+  const Scalar gnorm = g.norm();
+  const Vec3 m = g / gnorm;
+  const Mat3 P = Mat3::Identity() - m * m.transpose();
+  const Mat3 S = P * quadratic_ * P / gnorm;
+  return (S + S.transpose()) / 2;
+}
+
 Vec3 Ellipsoid::support(const Vec3& direction) const {
   const Scalar scale = direction.cwiseAbs().maxCoeff();
   if (!(scale > 0) || !std::isfinite(scale)) {

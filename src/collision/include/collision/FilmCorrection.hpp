@@ -10,8 +10,10 @@
  * film gap gets the force -D (u_n - u_n,ref) n, implicit in the end velocity
  * (CollisionModel::dampingForces), with
  *     D = 6 pi mu R^2/max(h, filmGap/4),
- * R the reduced Gaussian curvature radius at the closest points (a wall: the
- * body's). Each body carries its film gap (CollisionBody::filmGap, 0: none);
+ * R the squeeze radius of the gap's paraboloid at the closest points
+ * (GapParaboloid.hpp: for spheres the reduced radius, for a sphere and a wall
+ * its radius), so that D is the leading squeeze-film damping at the gap
+ * max(h, filmGap/4). Each body carries its film gap (CollisionBody::filmGap, 0: none);
  * a pair's is the larger of its bodies'.
  *
  * Usage: constructed by the caller with the viscosity mu > 0 [Pa s] and given

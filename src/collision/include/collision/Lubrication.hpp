@@ -5,7 +5,8 @@
  *
  * A law acts below its activation gap ratio (pairs: 2h/(R1 + R2), walls:
  * h/R, with R the Gaussian curvature radii at the closest points) and gives,
- * for one pair of radii, its coefficient against the gap (LubricationGapLaw),
+ * for one pair of radii and the squeeze radius of the gap's paraboloid, its
+ * coefficient against the gap (LubricationGapLaw),
  * which CollisionModel::dampingForces applies implicitly.
  * Implementations: NoLubrication, StokesLubrication.
  */
@@ -23,8 +24,10 @@ class Lubrication {
   /// The gap ratio below which the law acts; 0: it never acts (no reach).
   virtual Scalar activation() const = 0;
 
-  /// The law of one pair against its gap; r1, r2 the curvature radii (r2 = infinity: a wall).
-  virtual LubricationGapLaw gapLaw(Scalar r1, Scalar r2) const = 0;
+  /// The law of one pair against its gap; r1, r2 the Gaussian curvature radii
+  /// (r2 = infinity: a wall), squeezeRadius R* of the gap's paraboloid
+  /// (GapParaboloid.hpp; spheres: r1 r2/(r1 + r2), a sphere and a wall: r1).
+  virtual LubricationGapLaw gapLaw(Scalar r1, Scalar r2, Scalar squeezeRadius) const = 0;
 };
 
 }  // namespace collision

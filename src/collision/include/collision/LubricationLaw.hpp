@@ -19,8 +19,12 @@
  *     F = -6 pi mu a1 [lambda(max(xi, xi_sat)) - lambda(xi_act)] u
  * is added, frozen below the saturation gap xi_sat (surface roughness; the
  * founding paper's eps_1 = 1e-3), so that it stays finite; off in contact.
- * For spheroids (Ardekani et al. 2016) a1, a2 are the Gaussian curvature
- * radii of the bodies at their closest points (a plane: infinite).
+ * For spheroids a1, a2 are the Gaussian curvature radii of the bodies at their
+ * closest points (a plane: infinite; Ardekani et al. 2016), and the leading
+ * term, the squeeze force of the local gap, is that of the gap's paraboloid
+ * (GapParaboloid.hpp): 6 pi mu R*^2 u/h in place of the two spheres'
+ * 6 pi mu (a1 a2/(a1 + a2))^2 u/h (a plane: a^2), the logarithmic terms those
+ * of the two spheres (LubricationGapLaw with a squeeze radius).
  */
 #ifndef COLLISION_LUBRICATIONLAW_HPP
 #define COLLISION_LUBRICATIONLAW_HPP
@@ -99,6 +103,10 @@ class LubricationGapLaw {
   LubricationGapLaw() = default;
   /// a2 = infinity: a sphere of radius a1 and a plane
   LubricationGapLaw(Scalar a1, Scalar a2, Scalar viscosity, const LubricationParameters& p);
+  /// The same with the leading term 6 pi mu R*^2 u/h of the gap's paraboloid
+  /// (squeezeRadius R* > 0; for spheres R* = a1 a2/(a1 + a2), a plane: a1)
+  LubricationGapLaw(Scalar a1, Scalar a2, Scalar viscosity, const LubricationParameters& p,
+                    Scalar squeezeRadius);
   Scalar coefficient(Scalar gap) const;
   /// G(gap) = int_0^gap c(h) dh (0 for gap <= 0, constant beyond the activation gap)
   Scalar primitive(Scalar gap) const;
@@ -107,7 +115,7 @@ class LubricationGapLaw {
   Scalar lambda(Scalar x) const;
   Scalar lambdaPrimitive(Scalar x) const;
   bool wall_ = true;
-  Scalar A_ = 0, B_ = 0, C_ = 0;  ///< the pair law's terms (pairs)
+  Scalar A_ = 0, B_ = 0, C_ = 0;  ///< the pair law's terms; walls: A_, the 1/eps term's
   Scalar scale_ = 0;              ///< gap ratio x = scale_ h
   Scalar force_ = 0;              ///< 6 pi mu a1: c = force_ (lambda(x) - lambda(x_act))
   Scalar act_ = 0, sat_ = 0, lambdaAct_ = 0, lambdaSat_ = 0, primitiveSat_ = 0;

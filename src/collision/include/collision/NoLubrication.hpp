@@ -15,7 +15,7 @@ namespace collision {
 class NoLubrication : public Lubrication {
  public:
   Scalar activation() const override { return 0; }
-  LubricationGapLaw gapLaw(Scalar, Scalar) const override { return LubricationGapLaw(); }
+  LubricationGapLaw gapLaw(Scalar, Scalar, Scalar) const override { return LubricationGapLaw(); }
 };
 
 }  // namespace collision

@@ -34,7 +34,7 @@ class StokesLubrication : public Lubrication {
   const LubricationParameters& parameters() const { return parameters_; }
 
   Scalar activation() const override;
-  LubricationGapLaw gapLaw(Scalar r1, Scalar r2) const override;
+  LubricationGapLaw gapLaw(Scalar r1, Scalar r2, Scalar squeezeRadius) const override;
 
  private:
   Scalar viscosity_;

@@ -142,6 +142,17 @@ class Ellipsoid {
   CurvatureRadii curvatureRadii(const Vec3& surfacePoint) const;
 
   /**
+   * @brief The curvature tensor (shape operator) at a surface point, in the
+   *        world frame: S = P A P / |A x|, x the point relative to the centre,
+   *        P = I - m m^T the projector on the tangent plane, m the outward unit
+   *        normal. S m = 0; on the tangent plane its eigenvalues are the
+   *        principal curvatures and its eigenvectors their directions; the
+   *        surface near the point is y = -t^T S t / 2 along -m for a tangent
+   *        offset t (to second order). The point is first projected radially.
+   */
+  Mat3 curvatureTensor(const Vec3& surfacePoint) const;
+
+  /**
    * @brief Support mapping s(n) = argmax_{x in E} n.x = r + P n / sqrt(n^T P n)
    *        (eqs. 2.19-2.20).
    * @param direction any non-zero finite vector (need not be unit)

@@ -21,7 +21,9 @@
  * leading terms of Jeffrey & Onishi 1984 and Cox & Brenner 1967). It takes the
  * relative orientation of the two surfaces' principal directions into account
  * (two crossed cylinders and two parallel ones differ), which radii of
- * curvature combined as two spheres do not.
+ * curvature combined as two spheres do not. The Reynolds equation solved on
+ * the exact gap of spheres, spheroids and planes tends to this force as the
+ * gap closes (validation/squeezeFilm).
  */
 #ifndef COLLISION_GAPPARABOLOID_HPP
 #define COLLISION_GAPPARABOLOID_HPP

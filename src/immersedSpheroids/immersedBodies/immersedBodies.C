@@ -371,7 +371,7 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
             forcing == penaltyForcing::method::surfaceCorrected
           ? film.viscosity()/fluidDensity_
           : 0,
-            domain_
+            domain_, UName_
         )
     );
     integrator_.reset
@@ -424,7 +424,13 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     {
         Info<< ", virtual mass C_v " << virtualMass;
     }
+    wordList fixedFlux;
+    for (const label patchi : penaltyForcing::fixedFluxPatches(mesh, UName_))
+    {
+        fixedFlux.append(mesh.boundaryMesh()[patchi].name());
+    }
     Info<< ", wall cells " << wallCellPenaltyNames[wallCells]
+        << " (on patches " << fixedFlux << ")"
         << ", contact cells " << wallCellPenaltyNames[contactCells]
         << ", periodic axes " << domain_.describe().c_str()
         << ", meanFlow "

@@ -7,6 +7,9 @@ License
 
 #include "penaltyForcing.H"
 #include "wallPolyPatch.H"
+#include "emptyPolyPatch.H"
+#include "wedgePolyPatch.H"
+#include "fixedValueFvPatchFields.H"
 #include "syncTools.H"
 #include "processCpuTime.H"
 #include "cellSolidFraction.H"
@@ -58,6 +61,40 @@ Foam::penaltyForcing::methodNames
 });
 
 
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::labelList Foam::penaltyForcing::fixedFluxPatches
+(
+    const fvMesh& mesh,
+    const word& UName
+)
+{
+    // A rigid-body velocity with a component through a boundary face cannot
+    // be imposed in the cell behind it where the face's flux is prescribed:
+    // wall patches, and any other patch whose velocity condition is a fixed
+    // value (fixedValue and the conditions derived from it: an inlet). A
+    // mixed condition such as inletOutlet leaves the outflow to the
+    // pressure, and coupled, empty and wedge patches carry no such
+    // condition; without the velocity field (a caller that has none
+    // registered) only the wall patches are known.
+    const volVectorField* U = mesh.findObject<volVectorField>(UName);
+    DynamicList<label> patches;
+    forAll(mesh.boundaryMesh(), patchi)
+    {
+        const polyPatch& pp = mesh.boundaryMesh()[patchi];
+        const bool fixedVelocity =
+            U && !pp.coupled() && !isA<emptyPolyPatch>(pp)
+         && !isA<wedgePolyPatch>(pp)
+         && isA<fixedValueFvPatchVectorField>(U->boundaryField()[patchi]);
+        if (isA<wallPolyPatch>(pp) || fixedVelocity)
+        {
+            patches.append(patchi);
+        }
+    }
+    return labelList(std::move(patches));
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::penaltyForcing::penaltyForcing
@@ -67,7 +104,8 @@ Foam::penaltyForcing::penaltyForcing
     const bool softWallCells,
     const bool softContactCells,
     const scalar nu,
-    const periodicDomain& domain
+    const periodicDomain& domain,
+    const word& UName
 )
 :
     mesh_(mesh),
@@ -90,15 +128,11 @@ Foam::penaltyForcing::penaltyForcing
     cellHeld_(mesh.nCells(), 0),
     cpu_(0)
 {
-    forAll(mesh.boundaryMesh(), patchi)
+    for (const label patchi : fixedFluxPatches(mesh, UName))
     {
-        const polyPatch& pp = mesh.boundaryMesh()[patchi];
-        if (isA<wallPolyPatch>(pp))
+        for (const label celli : mesh.boundaryMesh()[patchi].faceCells())
         {
-            for (const label celli : pp.faceCells())
-            {
-                wallCell_[celli] = true;
-            }
+            wallCell_[celli] = true;
         }
     }
     if (method_ == method::surfaceCorrected)

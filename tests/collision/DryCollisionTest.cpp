@@ -437,3 +437,95 @@ TEST(DryCollision, ARestartInsideALoadedStackContinuesBitwise) {
   }
   EXPECT_GT(model.statistics().stiffened, 0) << "the load rule acted";
 }
+
+namespace {
+
+/// Tangential speed along x of the lowest point of a sphere of radius r (the contact point on z = 0).
+Scalar contactPointSlip(const RigidBody& b, Scalar r) {
+  return (b.velocity + b.angularVelocity.cross(Vec3(0, 0, -r))).x();
+}
+
+/// A sphere (r 2 mm, steel) thrown at the floor with a tangential speed ut
+/// and the normal speed 0.5 m/s, friction mu of the given law, e 0.9, 40
+/// sub-steps per contact: its velocity after the impact.
+RigidBody obliqueSphereImpact(Scalar ut, Scalar mu, const std::string& law) {
+  const Scalar r = 2e-3;
+  std::vector<RigidBody> b{sphere(r, Vec3(0, 0, r + 1e-5), Vec3(ut, 0, -0.5))};
+  ModelSetup s = contactOnly(0.9);
+  s.laws.contact.friction = mu;
+  s.laws.contact.frictionModel = law;
+  s.settings.subStepsPerContact = 40;
+  CollisionModel model = makeModel(s, {PlaneWall{"floor", Vec3::Zero(), Vec3::UnitZ()}});
+  simulate(b, model, 1e-5, 1e-3);
+  EXPECT_EQ(model.activeContacts(), 0u);
+  return b[0];
+}
+
+}  // namespace
+
+TEST(Friction, ASphereThatSticksLeavesWithItsContactPointsSlipReversedByE) {
+  // small slip (0.05 against 0.5 normal): the tangential impulse that
+  // reverses it is far below mu times the normal one, so the contact sticks;
+  // the tangential spring has the normal one's period and damping, and
+  // returns the contact point's slip with -e (0.9). Sliding friction only
+  // stops it (slip 0 after the impact)
+  const Scalar r = 2e-3, ut = 0.05;
+  const RigidBody spring = obliqueSphereImpact(ut, 0.5, "coulombSpring");
+  EXPECT_NEAR(contactPointSlip(spring, r) / ut, -0.9, 0.05);
+  EXPECT_NEAR(spring.velocity.z() / 0.5, 0.9, 0.02);
+  const RigidBody sliding = obliqueSphereImpact(ut, 0.5, "coulombSliding");
+  EXPECT_LT(std::abs(contactPointSlip(sliding, r)) / ut, 0.05);
+}
+
+TEST(Friction, ASphereThatSlidesGetsMuTimesTheNormalImpulseWithEitherLaw) {
+  // large slip (1 m/s) and mu 0.1: sliding throughout, the tangential impulse
+  // is mu (1 + e) m u_n: the centre loses 0.1 x 1.9 x 0.5 = 0.095 m/s
+  for (const std::string law : {"coulombSpring", "coulombSliding"}) {
+    const RigidBody b = obliqueSphereImpact(1.0, 0.1, law);
+    EXPECT_NEAR(1.0 - b.velocity.x(), 0.1 * 1.9 * 0.5, 0.002) << law;
+    EXPECT_GT(contactPointSlip(b, 2e-3), 0.5) << law << ": still sliding";
+  }
+}
+
+TEST(Friction, AProlateOnAnInclineIsHeldByStaticFrictionWithTheSpringOnly) {
+  // a prolate spheroid (4 x 2 x 2 mm) lying on the floor with its axis down
+  // the slope of gravity (tan theta 0.3 < mu 0.5: it must not move), the load
+  // declared, a drag -c v (c dt/m = 0.1, as a liquid gives) that damps its
+  // rocking onto the contact point below its centre; contact time 1 ms (10
+  // steps). With the spring it comes to rest; with sliding friction only it
+  // creeps down the slope at a steady speed (measured 0.48 mm/s)
+  const Scalar a = 2e-3, b = 1e-3, theta = std::atan(0.3), drag = 0.02;
+  const Vec3 g = 9.81 * Vec3(std::sin(theta), 0, -std::cos(theta));
+  const Scalar dt = 1e-4, contactTime = 1e-3;
+  Scalar drift[2], speed[2];
+  int k = 0;
+  for (const std::string law : {"coulombSpring", "coulombSliding"}) {
+    ModelSetup s = contactOnly(0.5);
+    s.laws.contact.friction = 0.5;
+    s.laws.contact.frictionModel = law;
+    CollisionModel model = makeModel(s, {PlaneWall{"floor", Vec3::Zero(), Vec3::UnitZ()}});
+    RigidBody body;
+    body.semiAxes = Vec3(a, b, b);
+    body.density = 2500;
+    body.centre = Vec3(0, 0, b);
+    Scalar xHalf = 0;
+    const int steps = 5000;  // 0.5 s
+    for (int step = 0; step < steps; ++step) {
+      std::vector<CollisionBody> cb{body.collisionBody()};
+      const Vec3 external = body.mass() * g - drag * body.velocity;
+      cb[0].externalForce = external;
+      std::vector<Vec3> F, T;
+      model.forces(cb, contactTime, dt, F, T);
+      advanceBody(body, F[0] + external, T[0], dt);
+      ASSERT_TRUE(body.centre.allFinite());
+      ASSERT_EQ(model.activeContacts(), step == 0 ? model.activeContacts() : 1u) << law << " lost the floor";
+      if (step == steps / 2) xHalf = body.centre.x();
+    }
+    drift[k] = body.centre.x() - xHalf;  // over the last 0.25 s
+    speed[k++] = body.velocity.x();
+  }
+  EXPECT_GT(speed[1], 1e-4) << "sliding friction alone creeps";
+  EXPECT_GT(drift[1], 1e-5);
+  EXPECT_LT(std::abs(speed[0]), 1e-3 * speed[1]) << "the spring holds it";
+  EXPECT_LT(std::abs(drift[0]), 1e-6);
+}

@@ -1,6 +1,7 @@
 #include "collision/ContactLaw.hpp"
 #include "collision/CoulombFriction.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -16,6 +17,16 @@ void ContactParameters::validate() const {
     throw std::invalid_argument("contact: " +
                                 outOfRangeMessage("friction", friction, kFrictionRange));
   }
+  const auto& models = frictionModels();
+  if (std::find(models.begin(), models.end(), frictionModel) == models.end()) {
+    throw std::invalid_argument("contact: frictionModel '" + frictionModel +
+                                "' unknown (allowed: coulombSpring, coulombSliding)");
+  }
+}
+
+const std::vector<std::string>& ContactParameters::frictionModels() {
+  static const std::vector<std::string> names{"coulombSpring", "coulombSliding"};
+  return names;
 }
 
 Scalar inverseEffectiveMass(const ContactSide& s1, const ContactSide& s2, const Vec3& d) {
@@ -57,7 +68,8 @@ Vec3 contactForce(Scalar elasticForce, const Vec3& n, const Vec3& relativeVeloci
                   Scalar friction, Scalar dt) {
   const Scalar fn = normalForce(elasticForce, relativeVelocity.dot(n), law);
   Vec3 force = fn * n;
-  CoulombFriction(friction).addForce(fn, n, relativeVelocity, s1, s2, dt, force);
+  ContactState state;
+  CoulombFriction(friction).addForce(fn, n, relativeVelocity, s1, s2, dt, state, force);
   return force;
 }
 

@@ -7,7 +7,7 @@ namespace collision {
 
 void CoulombFriction::addForce(Scalar normalForce, const Vec3& n, const Vec3& relativeVelocity,
                                const ContactSide& s1, const ContactSide& s2, Scalar dt,
-                               Vec3& force) const {
+                               ContactState&, Vec3& force) const {
   if (!(coefficient_ > 0)) return;
   const Scalar un = relativeVelocity.dot(n);
   const Vec3 ut = relativeVelocity - un * n;

@@ -1,9 +1,19 @@
 #include "collision/InteractionModel.hpp"
+#include "collision/CoulombFriction.hpp"
+#include "collision/SpringCoulombFriction.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
 namespace collision {
+
+std::unique_ptr<Friction> makeFriction(const ContactParameters& contact) {
+  contact.validate();
+  if (contact.frictionModel == "coulombSliding") {
+    return std::make_unique<CoulombFriction>(contact.friction);
+  }
+  return std::make_unique<SpringCoulombFriction>(contact.friction, contact.restitution);
+}
 
 void InteractionParameters::validate() const {
   contact.validate();

@@ -1,6 +1,5 @@
 #include "collision/WallModel.hpp"
 
-#include "collision/CoulombFriction.hpp"
 #include "collision/NoLubrication.hpp"
 #include "collision/StokesLubrication.hpp"
 
@@ -17,7 +16,7 @@ std::unique_ptr<WallModel> WallModel::New(const std::string& name,
                                           const InteractionParameters& parameters) {
   parameters.validate();
   const SpringDashpotContact contact(parameters.contact.restitution);
-  auto friction = std::make_unique<CoulombFriction>(parameters.contact.friction);
+  std::unique_ptr<Friction> friction = makeFriction(parameters.contact);
   if (name == "springDashpot") {
     return std::make_unique<WallModel>(name, contact, std::move(friction),
                                        std::make_unique<NoLubrication>());

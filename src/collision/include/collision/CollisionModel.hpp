@@ -159,6 +159,11 @@ struct PairRecord {
   Scalar overlap = 0;
   /// the contact force on second in the last call (the load rule's other contacts)
   Vec3 contactForce = Vec3::Zero();
+  /// the material points the tangential spring joins (coulombSpring
+  /// friction; ContactState): anchored false = set at the next call
+  bool anchored = false;
+  Vec3 anchor1 = Vec3::Zero();
+  Vec3 anchor2 = Vec3::Zero();
 };
 
 class CollisionModel {

@@ -20,13 +20,16 @@
  * m_eff changes while a turning body moves the contact point;
  * SpringDashpotContact keeps k_n and eta_n of the first touch for the whole
  * contact (a k_n that follows m_eff is not conservative).
- * Tangential: CoulombFriction.
+ * Tangential: SpringCoulombFriction (default) or CoulombFriction.
  */
 #ifndef COLLISION_CONTACTLAW_HPP
 #define COLLISION_CONTACTLAW_HPP
 
 #include "collision/Range.hpp"
 #include "collision/Types.hpp"
+
+#include <string>
+#include <vector>
 
 namespace collision {
 
@@ -38,6 +41,11 @@ struct ContactParameters {
   /// Coulomb friction coefficient mu, in kFrictionRange (0: frictionless)
   Scalar friction = 0;
   static constexpr Range kFrictionRange{0, 100};
+  /// the tangential law, one of frictionModels(): coulombSpring (a tangential
+  /// spring bounded by mu |F_n|: static and sliding friction) or
+  /// coulombSliding (sliding friction only)
+  std::string frictionModel = "coulombSpring";
+  static const std::vector<std::string>& frictionModels();
 
   /// @throws std::invalid_argument naming the parameter and its allowed range
   void validate() const;

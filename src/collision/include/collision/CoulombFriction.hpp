@@ -7,10 +7,11 @@
  * sliding friction that at most stops the slip within the sub-step dt (no
  * tangential spring: sticking is not held against a steady load).
  *
- * Usage: the coefficient mu is ContactParameters::friction, in
- * ContactParameters::kFrictionRange (default 0: no force).
+ * Usage: frictionModel coulombSliding; the coefficient mu is
+ * ContactParameters::friction, in ContactParameters::kFrictionRange (default
+ * 0: no force).
  *
- * See also: Friction, NoFriction, PairModel, WallModel.
+ * See also: Friction, NoFriction, SpringCoulombFriction, PairModel, WallModel.
  */
 #ifndef COLLISION_COULOMBFRICTION_HPP
 #define COLLISION_COULOMBFRICTION_HPP
@@ -28,7 +29,7 @@ class CoulombFriction : public Friction {
 
   void addForce(Scalar normalForce, const Vec3& n, const Vec3& relativeVelocity,
                 const ContactSide& s1, const ContactSide& s2, Scalar dt,
-                Vec3& force) const override;
+                ContactState& contact, Vec3& force) const override;
 
  private:
   Scalar coefficient_ = 0;

@@ -3,13 +3,16 @@
  * @brief The tangential force of a contact: the interface of the friction
  *        laws a pair or wall model combines with its normal contact.
  *
- * Implementations: NoFriction, CoulombFriction. The models that use them:
+ * Implementations: NoFriction, CoulombFriction (sliding only),
+ * SpringCoulombFriction (a tangential spring bounded by Coulomb's limit:
+ * static and sliding friction). The models that use them:
  * PairModel, WallModel; the laws and their constants: docs/collisions.md.
  */
 #ifndef COLLISION_FRICTION_HPP
 #define COLLISION_FRICTION_HPP
 
 #include "collision/ContactLaw.hpp"
+#include "collision/SpringDashpotContact.hpp"
 
 namespace collision {
 
@@ -23,10 +26,12 @@ class Friction {
    * @param n unit normal from 1 to 2
    * @param relativeVelocity (v_2 - v_1) at the contact point
    * @param dt the sub-step the force is held over
+   * @param contact the contact's state (its contact time; the tangential
+   *        spring, which a law with one advances)
    */
   virtual void addForce(Scalar normalForce, const Vec3& n, const Vec3& relativeVelocity,
                         const ContactSide& s1, const ContactSide& s2, Scalar dt,
-                        Vec3& force) const = 0;
+                        ContactState& contact, Vec3& force) const = 0;
 };
 
 }  // namespace collision

@@ -7,7 +7,7 @@
  * ContactParameters and LubricationParameters):
  * | parameter   | used by                        | default | range |
  * |-------------|--------------------------------|---------|-------|
- * | contact     | SpringDashpotContact (restitution), CoulombFriction (friction) | 0.97, 0 | (0, 1], [0, 100] |
+ * | contact     | SpringDashpotContact (restitution), the friction law of frictionModel (friction) | 0.97, coulombSpring, 0 | (0, 1], coulombSpring or coulombSliding, [0, 100] |
  * | lubrication | StokesLubrication              | LubricationParameters |   |
  * | viscosity   | StokesLubrication, from the caller | 0   | > 0 when lubricated |
  *
@@ -36,6 +36,9 @@ struct InteractionParameters {
   /// @throws std::invalid_argument naming the parameter and its allowed range
   void validate() const;
 };
+
+/// The friction law ContactParameters::frictionModel names, with its coefficient (and restitution).
+std::unique_ptr<Friction> makeFriction(const ContactParameters& contact);
 
 class InteractionModel {
  public:

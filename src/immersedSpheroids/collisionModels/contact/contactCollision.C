@@ -125,7 +125,8 @@ Foam::collisionModels::contact::contact
 
     wordList allowed
     ({
-        "type", "walls", "restitution", "friction", "contactSteps",
+        "type", "walls", "restitution", "friction", "frictionModel",
+        "contactSteps",
         "subStepsPerContact", "maxOverlap", "distanceAccuracy", "maxSubSteps",
         "distanceMethod", "pairModel", "wallModel"
     });
@@ -158,6 +159,11 @@ Foam::collisionModels::contact::contact
     (
         dict, "friction", lawDefaults.contact.friction,
         Contact::kFrictionRange, "the Coulomb friction coefficient"
+    );
+    p.contact.frictionModel = readModelName
+    (
+        dict, "frictionModel", word(lawDefaults.contact.frictionModel),
+        Contact::frictionModels()
     );
     s.subStepsPerContact = label
     (
@@ -257,7 +263,8 @@ Foam::collisionModels::contact::contact
     Info<< "immersedBodies: collision model " << dict.get<word>("type")
         << ": pair model " << pairName << ", wall model " << wallName
         << ", e " << p.contact.restitution << ", friction "
-        << p.contact.friction << ", T_c = " << contactSteps_ << " deltaT, "
+        << p.contact.friction << " (" << p.contact.frictionModel.c_str()
+        << "), T_c = " << contactSteps_ << " deltaT, "
         << s.subStepsPerContact << " sub-steps per contact, max overlap "
         << s.maxOverlap << " a_min, eps_d " << s.distanceAccuracy << " R_G"
         << " (distance method " << s.distanceMethod.c_str() << ")";
@@ -453,29 +460,38 @@ void Foam::collisionModels::contact::report(const label nSubSteps)
 void Foam::collisionModels::contact::readHistory(const dictionary& dict)
 {
     // (first second warm dx dy dz contactTime springForce stiffness overlap
-    // fx fy fz ix iy iz); i: the periodic image of second (multiples of the
-    // periods); a 13-entry record has image 0, a 10-entry one no contact
-    // force either (zero), a 7-entry one starts the spring from k delta
+    // fx fy fz ix iy iz anchored a1x a1y a1z a2x a2y a2z); i: the periodic
+    // image of second (multiples of the periods), a1, a2: the material
+    // points the tangential spring joins (body frames; a wall: the world
+    // frame); a 16-entry record has none (set at the next call), a 13-entry
+    // one image 0 too, a 10-entry one no contact force either (zero), a
+    // 7-entry one starts the spring from k delta
     const List<scalarList> records =
         immersedSpheroids::readCheckedOrDefault<List<scalarList>>
         (
             dict, "collisionPairs", List<scalarList>(),
             "a list of (first second warm dx dy dz contactTime springForce"
-            " stiffness overlap fx fy fz ix iy iz)"
+            " stiffness overlap fx fy fz ix iy iz anchored a1x a1y a1z"
+            " a2x a2y a2z)"
         );
     std::vector<collision::PairRecord> history;
     for (const scalarList& r : records)
     {
-        if (r.size() != 16 && r.size() != 13 && r.size() != 10 && r.size() != 7)
+        if
+        (
+            r.size() != 23 && r.size() != 16 && r.size() != 13
+         && r.size() != 10 && r.size() != 7
+        )
         {
             immersedSpheroids::entryError
             (
                 dict, "collisionPairs",
                 "a record has " + std::to_string(r.size()) + " entries; allowed:"
-                " 16 (first second warm dx dy dz contactTime springForce"
-                " stiffness overlap fx fy fz ix iy iz), 13 (without the"
-                " image), 10 (without the contact force either) or 7"
-                " (without the last nine)"
+                " 23 (first second warm dx dy dz contactTime springForce"
+                " stiffness overlap fx fy fz ix iy iz anchored a1x a1y a1z"
+                " a2x a2y a2z), 16 (without the tangential spring's anchors),"
+                " 13 (without the image either), 10 (without the contact force"
+                " either) or 7 (without the last sixteen)"
             );
         }
         collision::PairRecord p;
@@ -494,12 +510,18 @@ void Foam::collisionModels::contact::readHistory(const dictionary& dict)
         {
             p.contactForce = collision::Vec3(r[10], r[11], r[12]);
         }
-        if (r.size() == 16)
+        if (r.size() >= 16)
         {
             for (int d = 0; d < 3; ++d)
             {
                 p.image[d] = int(std::lround(r[13 + d]));
             }
+        }
+        if (r.size() == 23)
+        {
+            p.anchored = r[16] > 0.5;
+            p.anchor1 = collision::Vec3(r[17], r[18], r[19]);
+            p.anchor2 = collision::Vec3(r[20], r[21], r[22]);
         }
         history.push_back(p);
     }
@@ -517,17 +539,20 @@ void Foam::collisionModels::contact::readHistory(const dictionary& dict)
 void Foam::collisionModels::contact::writeHistory(Ostream& os) const
 {
     const std::vector<collision::PairRecord> history = model_->history();
-    List<FixedList<scalar, 16>> records(label(history.size()));
+    List<FixedList<scalar, 23>> records(label(history.size()));
     forAll(records, i)
     {
         const collision::PairRecord& p = history[i];
-        records[i] = FixedList<scalar, 16>
+        records[i] = FixedList<scalar, 23>
         ({
             scalar(p.first), scalar(p.second), p.warm ? 1.0 : 0.0,
             p.direction.x(), p.direction.y(), p.direction.z(), p.contactTime,
             p.springForce, p.stiffness, p.overlap,
             p.contactForce.x(), p.contactForce.y(), p.contactForce.z(),
-            scalar(p.image[0]), scalar(p.image[1]), scalar(p.image[2])
+            scalar(p.image[0]), scalar(p.image[1]), scalar(p.image[2]),
+            p.anchored ? 1.0 : 0.0,
+            p.anchor1.x(), p.anchor1.y(), p.anchor1.z(),
+            p.anchor2.x(), p.anchor2.y(), p.anchor2.z()
         });
     }
     os.writeEntry("collisionPairs", records);

@@ -108,6 +108,8 @@ TEST(ContactLaw, OutOfRangeSettingsNameTheKeywordAndTheRangeOfTheConstants) {
        ContactParameters::kRestitutionRange},
       {"friction", [](ModelSetup& s) { s.laws.contact.friction = -0.1; },
        ContactParameters::kFrictionRange},
+      {"rollingFriction", [](ModelSetup& s) { s.laws.contact.rollingFriction = 2; },
+       ContactParameters::kRollingFrictionRange},
       {"maxOverlap", [](ModelSetup& s) { s.settings.maxOverlap = 0; },
        CollisionSettings::kMaxOverlapRange},
       {"subStepsPerContact", [](ModelSetup& s) { s.settings.subStepsPerContact = 3; },

@@ -529,3 +529,33 @@ TEST(Friction, AProlateOnAnInclineIsHeldByStaticFrictionWithTheSpringOnly) {
   EXPECT_LT(std::abs(speed[0]), 1e-3 * speed[1]) << "the spring holds it";
   EXPECT_LT(std::abs(drift[0]), 1e-6);
 }
+
+TEST(Friction, ASphereRollingOnTheFloorDeceleratesAtFiveSeventhsMuRG) {
+  // a sphere (r 2 mm) rolling without slip at 0.1 m/s on the floor under its
+  // weight (declared), friction 0.5 (it keeps rolling), rolling friction
+  // mu_r: dv/dt = -(5/7) mu_r g; without it the speed is kept
+  const Scalar r = 2e-3, dt = 1e-4, contactTime = 1e-3;
+  const Vec3 g(0, 0, -9.81);
+  for (const Scalar muR : {0.0, 0.02, 0.05}) {
+    ModelSetup s = contactOnly(0.5);
+    s.laws.contact.friction = 0.5;
+    s.laws.contact.rollingFriction = muR;
+    CollisionModel model = makeModel(s, {PlaneWall{"floor", Vec3::Zero(), Vec3::UnitZ()}});
+    RigidBody b = sphere(r, Vec3(0, 0, r), Vec3(0.1, 0, 0));
+    b.angularVelocity = Vec3(0, 0.1 / r, 0);
+    Scalar v0 = 0;
+    const int steps = 1500, start = 500;  // measured over 0.05-0.15 s
+    for (int step = 0; step < steps; ++step) {
+      std::vector<CollisionBody> cb{b.collisionBody()};
+      cb[0].externalForce = b.mass() * g;
+      std::vector<Vec3> F, T;
+      model.forces(cb, contactTime, dt, F, T);
+      advanceBody(b, F[0] + b.mass() * g, T[0], dt);
+      if (step == start) v0 = b.velocity.x();
+    }
+    const Scalar deceleration = (v0 - b.velocity.x()) / ((steps - 1 - start) * dt);
+    const Scalar expected = 5.0 / 7.0 * muR * 9.81;
+    EXPECT_NEAR(deceleration, expected, 0.03 * expected + 2e-3) << "mu_r " << muR;
+    EXPECT_LT(std::abs(contactPointSlip(b, r)), 1e-3) << "rolls without slipping";
+  }
+}

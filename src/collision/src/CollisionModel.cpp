@@ -1,5 +1,6 @@
 #include "collision/CollisionModel.hpp"
 #include "collision/GapParaboloid.hpp"
+#include "collision/RollingResistance.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,44 +16,6 @@ constexpr Scalar kInf = std::numeric_limits<Scalar>::infinity();
 void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("collision: " + what);
 }
-
-/// The material points the tangential spring of a contact joins (ContactState
-/// anchor1, anchor2: body frames, a wall's the world frame), set at the
-/// contact point when the state has none; body 2 is met through its image
-/// shifted by shift.
-class TangentialAnchors {
- public:
-  TangentialAnchors(const CollisionBody& b1, const CollisionBody* b2, const Vec3& shift,
-                    const Vec3& point, ContactState& c)
-      : b1_(b1), b2_(b2), shift_(shift) {
-    if (!c.anchored) {
-      c.anchor1 = b1.shape.rotation().transpose() * (point - b1.shape.centre());
-      c.anchor2 = b2 ? Vec3(b2->shape.rotation().transpose() * (point - shift - b2->shape.centre())) : point;
-      c.anchored = true;
-    }
-    world1_ = b1.shape.centre() + b1.shape.rotation() * c.anchor1;
-    world2_ = b2 ? Vec3(b2->shape.centre() + shift + b2->shape.rotation() * c.anchor2) : c.anchor2;
-  }
-
-  /// the anchors' separation (2 less 1) in the tangent plane of n
-  Vec3 elongation(const Vec3& n) const {
-    const Vec3 d = world2_ - world1_;
-    return d - d.dot(n) * n;
-  }
-
-  /// move anchor 2 so that the elongation is c.tangentialSpring (the normal
-  /// separation kept): the contact slid
-  void slide(const Vec3& n, ContactState& c) const {
-    const Vec3 target = world1_ + c.tangentialSpring + (world2_ - world1_).dot(n) * n;
-    c.anchor2 = b2_ ? Vec3(b2_->shape.rotation().transpose() * (target - shift_ - b2_->shape.centre())) : target;
-  }
-
- private:
-  const CollisionBody& b1_;
-  const CollisionBody* b2_;
-  Vec3 shift_;
-  Vec3 world1_, world2_;
-};
 
 ContactSide sideOf(const CollisionBody& b, const Vec3& point) {
   ContactSide s;
@@ -142,9 +105,8 @@ std::vector<PairRecord> CollisionModel::history() const {
     r.stiffness = c.stiffness;
     r.overlap = c.overlap;
     r.contactForce = c.force;
-    r.anchored = c.anchored;
-    r.anchor1 = c.anchor1;
-    r.anchor2 = c.anchor2;
+    r.tangentialSpring = c.tangentialSpring;
+    r.tangentialSlip = c.tangentialSlip;
   }
   std::vector<PairRecord> out;
   out.reserve(merged.size());
@@ -169,10 +131,11 @@ void CollisionModel::setHistory(const std::vector<PairRecord>& records) {
             "pair history " + pair + ": the warm-start direction must be finite and non-zero");
     require(std::isfinite(r.springForce) && r.springForce >= 0 && std::isfinite(r.stiffness) &&
                 r.stiffness >= 0 && std::isfinite(r.overlap) && r.overlap >= 0 &&
-                r.contactForce.allFinite() && r.anchor1.allFinite() && r.anchor2.allFinite(),
+                r.contactForce.allFinite() && r.tangentialSpring.allFinite() &&
+                r.tangentialSlip.allFinite(),
             "pair history " + pair +
                 ": spring force, stiffness and overlap must be finite and >= 0, the contact force and"
-                " the tangential spring's anchors finite");
+                " the tangential spring and slip finite");
     int image = PeriodicBox::kNoImage;
     try {
       image = PeriodicBox::imageCode(r.image);
@@ -187,7 +150,7 @@ void CollisionModel::setHistory(const std::vector<PairRecord>& records) {
     if (r.contactTime > 0) {
       contact_[key(r.first, r.second, image)] =
           ContactState{r.contactTime, r.springForce, r.stiffness, r.overlap, r.contactForce,
-                       r.anchored, r.anchor1, r.anchor2};
+                       r.tangentialSpring, r.tangentialSlip};
     }
   }
 }
@@ -226,7 +189,8 @@ int CollisionModel::subSteps(const std::vector<CollisionBody>& bodies, Scalar dt
 
 void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar contactTime,
                             Scalar subDt, std::vector<Vec3>& force, std::vector<Vec3>& torque,
-                            bool recordDamping) {
+                            bool recordDamping, Scalar elapsed) {
+  elapsed_ = elapsed < 0 ? subDt : elapsed;
   const int n = static_cast<int>(bodies.size());
   require(n <= PairKey::kMaxBodies, "collision: at most " + std::to_string(PairKey::kMaxBodies) + " bodies");
   force.assign(n, Vec3::Zero());
@@ -415,11 +379,19 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
           sustainedLoad(bodies, i, j, n, known != contact_.end() ? c.force : Vec3::Zero());
       const Scalar fn = model.contact().force(c, overlap, un, wInv, cap, load, statistics_.stiffened);
       Vec3 fContact = fn * n;
-      const TangentialAnchors anchors(b1, wall ? nullptr : &bodies[j], shift, point, c);
-      const Vec3 elongation = anchors.elongation(n);
-      c.tangentialSpring = elongation;
-      model.friction().addForce(fn, n, relative, s1, s2, subDt, c, fContact);
-      if (c.tangentialSpring != elongation) anchors.slide(n, c);
+      model.friction().addForce(fn, n, relative, s1, s2, subDt, known != contact_.end() ? elapsed_ : 0,
+                                c, fContact);
+      if (model.rollingFriction() > 0) {
+        // R_r: the reduced Gaussian radius at the contact (a wall: the body's)
+        const Scalar r1 = b1.shape.curvatureRadii(p1).gaussian;
+        const Scalar r2 = wall ? kInf : bodies[j].shape.curvatureRadii(p2 - shift).gaussian;
+        const Scalar rollingRadius = wall ? r1 : r1 * r2 / (r1 + r2);
+        const Vec3 t2 = rollingResistanceTorque(
+            model.rollingFriction(), rollingRadius, fn, n, b1.angularVelocity,
+            wall ? Vec3::Zero() : Vec3(bodies[j].angularVelocity), s1, s2, subDt);
+        torque[i] -= t2;
+        if (!wall) torque[j] += t2;
+      }
       c.force = fContact;
       f2 += fContact;
     }

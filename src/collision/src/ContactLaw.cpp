@@ -17,6 +17,10 @@ void ContactParameters::validate() const {
     throw std::invalid_argument("contact: " +
                                 outOfRangeMessage("friction", friction, kFrictionRange));
   }
+  if (!kRollingFrictionRange.contains(rollingFriction)) {
+    throw std::invalid_argument("contact: " + outOfRangeMessage("rollingFriction", rollingFriction,
+                                                                kRollingFrictionRange));
+  }
   const auto& models = frictionModels();
   if (std::find(models.begin(), models.end(), frictionModel) == models.end()) {
     throw std::invalid_argument("contact: frictionModel '" + frictionModel +
@@ -69,7 +73,7 @@ Vec3 contactForce(Scalar elasticForce, const Vec3& n, const Vec3& relativeVeloci
   const Scalar fn = normalForce(elasticForce, relativeVelocity.dot(n), law);
   Vec3 force = fn * n;
   ContactState state;
-  CoulombFriction(friction).addForce(fn, n, relativeVelocity, s1, s2, dt, state, force);
+  CoulombFriction(friction).addForce(fn, n, relativeVelocity, s1, s2, dt, 0, state, force);
   return force;
 }
 

@@ -6,7 +6,7 @@
 namespace collision {
 
 void CoulombFriction::addForce(Scalar normalForce, const Vec3& n, const Vec3& relativeVelocity,
-                               const ContactSide& s1, const ContactSide& s2, Scalar dt,
+                               const ContactSide& s1, const ContactSide& s2, Scalar dt, Scalar,
                                ContactState&, Vec3& force) const {
   if (!(coefficient_ > 0)) return;
   const Scalar un = relativeVelocity.dot(n);

@@ -26,11 +26,13 @@ void InteractionParameters::validate() const {
 
 InteractionModel::InteractionModel(std::string name, const SpringDashpotContact& contact,
                                    std::unique_ptr<Friction> friction,
-                                   std::unique_ptr<Lubrication> lubrication)
+                                   std::unique_ptr<Lubrication> lubrication,
+                                   Scalar rollingFriction)
     : name_(std::move(name)),
       contact_(contact),
       friction_(std::move(friction)),
-      lubrication_(std::move(lubrication)) {
+      lubrication_(std::move(lubrication)),
+      rollingFriction_(rollingFriction) {
   if (!friction_ || !lubrication_) {
     throw std::invalid_argument("collision: model " + name_ +
                                 " needs a friction and a lubrication law");

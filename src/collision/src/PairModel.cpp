@@ -19,12 +19,13 @@ std::unique_ptr<PairModel> PairModel::New(const std::string& name,
   std::unique_ptr<Friction> friction = makeFriction(parameters.contact);
   if (name == "springDashpot") {
     return std::make_unique<PairModel>(name, contact, std::move(friction),
-                                       std::make_unique<NoLubrication>());
+                                       std::make_unique<NoLubrication>(), parameters.contact.rollingFriction);
   }
   if (name == "lubricatedSpringDashpot") {
     return std::make_unique<PairModel>(
         name, contact, std::move(friction),
-        std::make_unique<StokesLubrication>(parameters.viscosity, parameters.lubrication, false));
+        std::make_unique<StokesLubrication>(parameters.viscosity, parameters.lubrication, false),
+        parameters.contact.rollingFriction);
   }
   throw std::invalid_argument("collision: unknown pair model '" + name +
                               "' (allowed: " + list(names()) + ")");

@@ -4,15 +4,29 @@
 
 namespace collision {
 
+namespace {
+/// v turned into the plane normal to the unit n, its length kept
+Vec3 intoPlane(const Vec3& v, const Vec3& n) {
+  const Vec3 projected = v - v.dot(n) * n;
+  const Scalar length = projected.norm();
+  return length > 0 ? Vec3(projected * (v.norm() / length)) : Vec3::Zero();
+}
+}  // namespace
+
 void SpringCoulombFriction::addForce(Scalar normalForce, const Vec3& n, const Vec3& relativeVelocity,
                                      const ContactSide& s1, const ContactSide& s2, Scalar,
-                                     ContactState& contact, Vec3& force) const {
+                                     Scalar elapsed, ContactState& contact, Vec3& force) const {
+  const Vec3 ut = relativeVelocity - relativeVelocity.dot(n) * n;
   if (!(coefficient_ > 0)) {
     contact.tangentialSpring = Vec3::Zero();
+    contact.tangentialSlip = ut;
     return;
   }
-  Vec3 xi = contact.tangentialSpring;
-  const Vec3 ut = relativeVelocity - relativeVelocity.dot(n) * n;
+  // the spring and the last slip turned into the current tangent plane (their
+  // lengths kept), then the slip of the time since the last call (trapezoidal)
+  Vec3 xi = intoPlane(contact.tangentialSpring, n);
+  xi += 0.5 * (intoPlane(contact.tangentialSlip, n) + ut) * elapsed;
+  contact.tangentialSlip = ut;
   const Scalar xiNorm = xi.norm();
   const Scalar utNorm = ut.norm();
   if (!(xiNorm > 0) && !(utNorm > 0)) {

@@ -19,7 +19,8 @@ void SubStepper::step(BodySet& bodies, std::vector<BodyState>& states, Collision
   if (model) {
     start_.clear();
     for (std::size_t i = 0; i < n; ++i) start_.push_back(bodies.collisionBody(i, states[i]));
-    model->forces(start_, contactTime, dt, force_, torque_);  // records the damped pairs
+    // the start of the sub-step: the time of the last corrector (elapsed 0)
+    model->forces(start_, contactTime, dt, force_, torque_, true, 0);  // records the damped pairs
 
     trial_ = states;
     predicted_.clear();
@@ -27,7 +28,7 @@ void SubStepper::step(BodySet& bodies, std::vector<BodyState>& states, Collision
       bodies.advance(i, trial_[i], t, dt, force_[i], torque_[i]);
       predicted_.push_back(bodies.collisionBody(i, trial_[i]));
     }
-    model->forces(predicted_, contactTime, dt, force1_, torque1_, false);
+    model->forces(predicted_, contactTime, dt, force1_, torque1_, false, dt);
     for (std::size_t i = 0; i < n; ++i) {
       force_[i] = 0.5 * (force_[i] + force1_[i]);
       torque_[i] = 0.5 * (torque_[i] + torque1_[i]);

@@ -19,12 +19,13 @@ std::unique_ptr<WallModel> WallModel::New(const std::string& name,
   std::unique_ptr<Friction> friction = makeFriction(parameters.contact);
   if (name == "springDashpot") {
     return std::make_unique<WallModel>(name, contact, std::move(friction),
-                                       std::make_unique<NoLubrication>());
+                                       std::make_unique<NoLubrication>(), parameters.contact.rollingFriction);
   }
   if (name == "lubricatedSpringDashpot") {
     return std::make_unique<WallModel>(
         name, contact, std::move(friction),
-        std::make_unique<StokesLubrication>(parameters.viscosity, parameters.lubrication, true));
+        std::make_unique<StokesLubrication>(parameters.viscosity, parameters.lubrication, true),
+        parameters.contact.rollingFriction);
   }
   throw std::invalid_argument("collision: unknown wall model '" + name +
                               "' (allowed: " + list(names()) + ")");

@@ -159,11 +159,10 @@ struct PairRecord {
   Scalar overlap = 0;
   /// the contact force on second in the last call (the load rule's other contacts)
   Vec3 contactForce = Vec3::Zero();
-  /// the material points the tangential spring joins (coulombSpring
-  /// friction; ContactState): anchored false = set at the next call
-  bool anchored = false;
-  Vec3 anchor1 = Vec3::Zero();
-  Vec3 anchor2 = Vec3::Zero();
+  /// the tangential spring and the slip velocity of the last call
+  /// (coulombSpring friction; ContactState)
+  Vec3 tangentialSpring = Vec3::Zero();
+  Vec3 tangentialSlip = Vec3::Zero();
 };
 
 class CollisionModel {
@@ -205,11 +204,16 @@ class CollisionModel {
    * The lubrication force and the film correction are not included: with
    * recordDamping the damped pairs of these states replace dampedPairs() (the
    * start of the sub-step), for dampingForces().
+   * elapsed: the time since the states of the last call, over which the
+   * contacts' tangential springs are advanced (negative: subDt, a caller
+   * evaluating once per sub-step; the sub-stepper's predictor, at the time of
+   * the last corrector, passes 0, its corrector subDt).
    * The statistics of the call are added to statistics().
    * @throws std::runtime_error on a non-finite force (naming the bodies)
    */
   void forces(const std::vector<CollisionBody>& bodies, Scalar contactTime, Scalar subDt,
-              std::vector<Vec3>& force, std::vector<Vec3>& torque, bool recordDamping = true);
+              std::vector<Vec3>& force, std::vector<Vec3>& torque, bool recordDamping = true,
+              Scalar elapsed = -1);
 
   /// The damped pairs recorded by the last forces() call that recorded them.
   const std::vector<DampedPair>& dampedPairs() const { return damped_; }
@@ -329,6 +333,8 @@ class CollisionModel {
   std::unordered_map<std::uint64_t, ContactState> contact_, nextContact_;
   CollisionStatistics statistics_;
   bool recordDamping_ = true;
+  /// the time the tangential springs advance over in this call (forces())
+  Scalar elapsed_ = 0;
   std::vector<DampedPair> damped_;
   /// each body's contact forces of the last call (the load of its other
   /// contacts), summed from contact_ at the start of a call

@@ -45,6 +45,10 @@ struct ContactParameters {
   /// spring bounded by mu |F_n|: static and sliding friction) or
   /// coulombSliding (sliding friction only)
   std::string frictionModel = "coulombSpring";
+  /// rolling friction coefficient mu_r, in kRollingFrictionRange (0: none):
+  /// the rolling resistance torque is at most mu_r R_r |F_n| (RollingResistance)
+  Scalar rollingFriction = 0;
+  static constexpr Range kRollingFrictionRange{0, 1};
   static const std::vector<std::string>& frictionModels();
 
   /// @throws std::invalid_argument naming the parameter and its allowed range

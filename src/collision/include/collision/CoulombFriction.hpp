@@ -28,7 +28,7 @@ class CoulombFriction : public Friction {
   Scalar coefficient() const { return coefficient_; }
 
   void addForce(Scalar normalForce, const Vec3& n, const Vec3& relativeVelocity,
-                const ContactSide& s1, const ContactSide& s2, Scalar dt,
+                const ContactSide& s1, const ContactSide& s2, Scalar dt, Scalar elapsed,
                 ContactState& contact, Vec3& force) const override;
 
  private:

@@ -26,11 +26,12 @@ class Friction {
    * @param n unit normal from 1 to 2
    * @param relativeVelocity (v_2 - v_1) at the contact point
    * @param dt the sub-step the force is held over
+   * @param elapsed the time since the contact's last call (0 at its first)
    * @param contact the contact's state (its contact time; the tangential
-   *        spring, which a law with one advances)
+   *        spring, which a law with one advances over elapsed)
    */
   virtual void addForce(Scalar normalForce, const Vec3& n, const Vec3& relativeVelocity,
-                        const ContactSide& s1, const ContactSide& s2, Scalar dt,
+                        const ContactSide& s1, const ContactSide& s2, Scalar dt, Scalar elapsed,
                         ContactState& contact, Vec3& force) const = 0;
 };
 

@@ -44,7 +44,8 @@ class InteractionModel {
  public:
   /// @throws std::invalid_argument if a law is missing
   InteractionModel(std::string name, const SpringDashpotContact& contact,
-                   std::unique_ptr<Friction> friction, std::unique_ptr<Lubrication> lubrication);
+                   std::unique_ptr<Friction> friction, std::unique_ptr<Lubrication> lubrication,
+                   Scalar rollingFriction = 0);
   virtual ~InteractionModel() = default;
 
   InteractionModel(const InteractionModel&) = delete;
@@ -55,6 +56,8 @@ class InteractionModel {
   const SpringDashpotContact& contact() const { return contact_; }
   const Friction& friction() const { return *friction_; }
   const Lubrication& lubrication() const { return *lubrication_; }
+  /// mu_r of the rolling resistance (RollingResistance.hpp; 0: none)
+  Scalar rollingFriction() const { return rollingFriction_; }
 
  protected:
   /// "a, b": the allowed names of a factory, for its error message
@@ -65,6 +68,7 @@ class InteractionModel {
   SpringDashpotContact contact_;
   std::unique_ptr<Friction> friction_;
   std::unique_ptr<Lubrication> lubrication_;
+  Scalar rollingFriction_ = 0;
 };
 
 }  // namespace collision

@@ -14,7 +14,7 @@ namespace collision {
 class NoFriction : public Friction {
  public:
   void addForce(Scalar, const Vec3&, const Vec3&, const ContactSide&, const ContactSide&, Scalar,
-                ContactState&, Vec3&) const override {}
+                Scalar, ContactState&, Vec3&) const override {}
 };
 
 }  // namespace collision

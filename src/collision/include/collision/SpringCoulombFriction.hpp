@@ -5,17 +5,18 @@
  *        spring onto the turning tangent plane and its reset on sliding as in
  *        Luding 2008).
  *
- * The spring joins the material points of the two bodies that touched first
- * (ContactState::anchor1, anchor2, kept through restarts); its elongation xi
- * is their separation projected onto the current tangent plane, which the
- * caller computes from the bodies' positions (CollisionModel), so that xi
- * depends on where the bodies are, not on how often the force is evaluated
- * (twice per sub-step). Body 2 gets
- *     F_t = -k_t xi - eta_t u_t,   |F_t| <= mu |F_n|,
- * u_t the tangential velocity of body 2 relative to body 1 at the contact
- * point; at the limit F_t is scaled to mu |F_n| and xi set to
- * -(F_t + eta_t u_t)/k_t, the elongation that force stands for (sliding),
- * which the caller turns into a moved anchor. k_t and eta_t are the
+ * The contact carries the spring's elongation xi (ContactState::
+ * tangentialSpring, zero at the first touch, kept through restarts) and the
+ * slip velocity of its last call. Each call turns both into the current
+ * tangent plane (keeping their lengths) and adds the slip over the time
+ * elapsed since the last call by the trapezoidal rule, (u_last + u_t)/2
+ * elapsed (u_t the tangential velocity of body 2 relative to body 1 at the
+ * contact point: zero for bodies rolling on each other): the sub-stepper's
+ * predictor, at the time of the last corrector, adds nothing and its
+ * corrector the whole sub-step. Body 2 gets
+ *     F_t = -k_t xi - eta_t u_t,   |F_t| <= mu |F_n|;
+ * at the limit F_t is scaled to mu |F_n| and xi set to -(F_t + eta_t u_t)/k_t,
+ * the elongation that force stands for (sliding). k_t and eta_t are the
  * spring-dashpot of the contact's own time T_c and restitution e for the
  * effective mass m_t of the contact point along the spring (ContactLaw.hpp:
  * the rotation included), so that the tangential oscillation has the normal
@@ -45,7 +46,7 @@ class SpringCoulombFriction : public Friction {
   Scalar coefficient() const { return coefficient_; }
 
   void addForce(Scalar normalForce, const Vec3& n, const Vec3& relativeVelocity,
-                const ContactSide& s1, const ContactSide& s2, Scalar dt,
+                const ContactSide& s1, const ContactSide& s2, Scalar dt, Scalar elapsed,
                 ContactState& contact, Vec3& force) const override;
 
  private:

@@ -32,15 +32,11 @@ struct ContactState {
   Scalar stiffness = 0;    ///< k_n of the contact (0: set at the next call)
   Scalar overlap = 0;      ///< overlap of the last call
   Vec3 force = Vec3::Zero();  ///< the contact force on the second body in the last call
-  /// the material points of the two bodies the tangential spring joins
-  /// (coulombSpring friction): each in its body's frame (a wall: the world
-  /// frame); set at the first touch, moved when the contact slides
-  bool anchored = false;
-  Vec3 anchor1 = Vec3::Zero();
-  Vec3 anchor2 = Vec3::Zero();
-  /// the spring's elongation in the tangent plane (set by the caller from the
-  /// anchors before the friction law, changed by the law when it slides)
+  /// the tangential spring's elongation (coulombSpring friction) and the
+  /// tangential slip velocity of the last call, which its trapezoidal
+  /// integration over the time between two calls needs
   Vec3 tangentialSpring = Vec3::Zero();
+  Vec3 tangentialSlip = Vec3::Zero();
 };
 
 class SpringDashpotContact {

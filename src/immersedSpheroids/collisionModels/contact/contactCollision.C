@@ -126,7 +126,7 @@ Foam::collisionModels::contact::contact
     wordList allowed
     ({
         "type", "walls", "restitution", "friction", "frictionModel",
-        "contactSteps",
+        "rollingFriction", "contactSteps",
         "subStepsPerContact", "maxOverlap", "distanceAccuracy", "maxSubSteps",
         "distanceMethod", "pairModel", "wallModel"
     });
@@ -159,6 +159,12 @@ Foam::collisionModels::contact::contact
     (
         dict, "friction", lawDefaults.contact.friction,
         Contact::kFrictionRange, "the Coulomb friction coefficient"
+    );
+    p.contact.rollingFriction = readOptionalInRange<scalar>
+    (
+        dict, "rollingFriction", lawDefaults.contact.rollingFriction,
+        Contact::kRollingFrictionRange,
+        "the rolling friction coefficient mu_r (torque mu_r R_r |F_n|)"
     );
     p.contact.frictionModel = readModelName
     (
@@ -264,7 +270,7 @@ Foam::collisionModels::contact::contact
         << ": pair model " << pairName << ", wall model " << wallName
         << ", e " << p.contact.restitution << ", friction "
         << p.contact.friction << " (" << p.contact.frictionModel.c_str()
-        << "), T_c = " << contactSteps_ << " deltaT, "
+        << "), rolling friction " << p.contact.rollingFriction << ", T_c = " << contactSteps_ << " deltaT, "
         << s.subStepsPerContact << " sub-steps per contact, max overlap "
         << s.maxOverlap << " a_min, eps_d " << s.distanceAccuracy << " R_G"
         << " (distance method " << s.distanceMethod.c_str() << ")";
@@ -460,26 +466,24 @@ void Foam::collisionModels::contact::report(const label nSubSteps)
 void Foam::collisionModels::contact::readHistory(const dictionary& dict)
 {
     // (first second warm dx dy dz contactTime springForce stiffness overlap
-    // fx fy fz ix iy iz anchored a1x a1y a1z a2x a2y a2z); i: the periodic
-    // image of second (multiples of the periods), a1, a2: the material
-    // points the tangential spring joins (body frames; a wall: the world
-    // frame); a 16-entry record has none (set at the next call), a 13-entry
-    // one image 0 too, a 10-entry one no contact force either (zero), a
-    // 7-entry one starts the spring from k delta
+    // fx fy fz ix iy iz tx ty tz sx sy sz); i: the periodic image of second
+    // (multiples of the periods), t the tangential spring, s the slip
+    // velocity of its last call; a 16-entry record has neither (zero), a
+    // 13-entry one image 0 too, a 10-entry one no contact force either
+    // (zero), a 7-entry one starts the spring from k delta
     const List<scalarList> records =
         immersedSpheroids::readCheckedOrDefault<List<scalarList>>
         (
             dict, "collisionPairs", List<scalarList>(),
             "a list of (first second warm dx dy dz contactTime springForce"
-            " stiffness overlap fx fy fz ix iy iz anchored a1x a1y a1z"
-            " a2x a2y a2z)"
+            " stiffness overlap fx fy fz ix iy iz tx ty tz sx sy sz)"
         );
     std::vector<collision::PairRecord> history;
     for (const scalarList& r : records)
     {
         if
         (
-            r.size() != 23 && r.size() != 16 && r.size() != 13
+            r.size() != 22 && r.size() != 16 && r.size() != 13
          && r.size() != 10 && r.size() != 7
         )
         {
@@ -487,11 +491,11 @@ void Foam::collisionModels::contact::readHistory(const dictionary& dict)
             (
                 dict, "collisionPairs",
                 "a record has " + std::to_string(r.size()) + " entries; allowed:"
-                " 23 (first second warm dx dy dz contactTime springForce"
-                " stiffness overlap fx fy fz ix iy iz anchored a1x a1y a1z"
-                " a2x a2y a2z), 16 (without the tangential spring's anchors),"
-                " 13 (without the image either), 10 (without the contact force"
-                " either) or 7 (without the last sixteen)"
+                " 22 (first second warm dx dy dz contactTime springForce"
+                " stiffness overlap fx fy fz ix iy iz tx ty tz sx sy sz), 16"
+                " (without the tangential spring and slip), 13 (without the"
+                " image either), 10 (without the contact force either) or 7"
+                " (without the last fifteen)"
             );
         }
         collision::PairRecord p;
@@ -517,11 +521,10 @@ void Foam::collisionModels::contact::readHistory(const dictionary& dict)
                 p.image[d] = int(std::lround(r[13 + d]));
             }
         }
-        if (r.size() == 23)
+        if (r.size() == 22)
         {
-            p.anchored = r[16] > 0.5;
-            p.anchor1 = collision::Vec3(r[17], r[18], r[19]);
-            p.anchor2 = collision::Vec3(r[20], r[21], r[22]);
+            p.tangentialSpring = collision::Vec3(r[16], r[17], r[18]);
+            p.tangentialSlip = collision::Vec3(r[19], r[20], r[21]);
         }
         history.push_back(p);
     }
@@ -539,20 +542,20 @@ void Foam::collisionModels::contact::readHistory(const dictionary& dict)
 void Foam::collisionModels::contact::writeHistory(Ostream& os) const
 {
     const std::vector<collision::PairRecord> history = model_->history();
-    List<FixedList<scalar, 23>> records(label(history.size()));
+    List<FixedList<scalar, 22>> records(label(history.size()));
     forAll(records, i)
     {
         const collision::PairRecord& p = history[i];
-        records[i] = FixedList<scalar, 23>
+        records[i] = FixedList<scalar, 22>
         ({
             scalar(p.first), scalar(p.second), p.warm ? 1.0 : 0.0,
             p.direction.x(), p.direction.y(), p.direction.z(), p.contactTime,
             p.springForce, p.stiffness, p.overlap,
             p.contactForce.x(), p.contactForce.y(), p.contactForce.z(),
             scalar(p.image[0]), scalar(p.image[1]), scalar(p.image[2]),
-            p.anchored ? 1.0 : 0.0,
-            p.anchor1.x(), p.anchor1.y(), p.anchor1.z(),
-            p.anchor2.x(), p.anchor2.y(), p.anchor2.z()
+            p.tangentialSpring.x(), p.tangentialSpring.y(),
+            p.tangentialSpring.z(),
+            p.tangentialSlip.x(), p.tangentialSlip.y(), p.tangentialSlip.z()
         });
     }
     os.writeEntry("collisionPairs", records);

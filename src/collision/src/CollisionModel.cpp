@@ -1,6 +1,7 @@
 #include "collision/CollisionModel.hpp"
 #include "collision/GapParaboloid.hpp"
 #include "collision/RollingResistance.hpp"
+#include "collision/TangentialLubrication.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -445,6 +446,10 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
       pair.lubrication = pair.law.coefficient(gap);
       pair.startPrimitive = pair.law.primitive(gap);
       if (pair.lubrication > 0) ++statistics_.lubricated;
+      if (model.lubrication().tangential()) {
+        addTangentialLubrication(bodies, model.lubrication(), i, j, shift, pair.law.logFactor(gap),
+                                 r1, r2, n, p1, p2, s1, s2, subDt, force, torque);
+      }
     }
     if (film) {
       pair.film = film_->coefficient(squeezeRadius, gap, filmGap);
@@ -459,6 +464,39 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
   if (!wall) {
     force[j] += f2;
     torque[j] += s2.arm.cross(f2);
+  }
+}
+
+void CollisionModel::addTangentialLubrication(const std::vector<CollisionBody>& bodies,
+                                              const Lubrication& lubrication, int i, int j,
+                                              const Vec3& shift, Scalar logFactor, Scalar r1,
+                                              Scalar r2, const Vec3& n, const Vec3& p1, const Vec3& p2,
+                                              const ContactSide& s1, const ContactSide& s2,
+                                              Scalar subDt, std::vector<Vec3>& force,
+                                              std::vector<Vec3>& torque) const {
+  if (!(logFactor > 0)) return;
+  const bool wall = j < 0;
+  const TangentialLubrication law(r1, r2, lubrication.viscosity());
+  // each body's osculating sphere at its closest point, moving with the body
+  // (body 2 through its image: its own frame is the point less the shift)
+  const CollisionBody& b1 = bodies[i];
+  const Vec3 c1 = p1 - r1 * n;
+  const Vec3 c2 = wall ? Vec3::Zero() : Vec3(p2 + r2 * n - shift);
+  const TangentialLubricationLoads l = law.loads(
+      logFactor, n, pointVelocity(b1, c1), b1.angularVelocity,
+      wall ? Vec3::Zero() : pointVelocity(bodies[j], c2),
+      wall ? Vec3::Zero() : Vec3(bodies[j].angularVelocity));
+  // explicit in the sub-step, scaled by the backward-Euler factor of the
+  // fastest rate the terms impose: close to 1 where the rate is small against
+  // 1/subDt, and never reversing the relative motion where it is not
+  const Scalar relax =
+      1 / (1 + subDt * law.rate(logFactor, s1.inverseMass, s1.inverseInertia, s2.inverseMass,
+                                 s2.inverseInertia));
+  force[i] += relax * l.force1;
+  torque[i] += relax * (l.torque1 + (c1 - b1.shape.centre()).cross(l.force1));
+  if (!wall) {
+    force[j] -= relax * l.force1;
+    torque[j] += relax * (l.torque2 - (c2 - bodies[j].shape.centre()).cross(l.force1));
   }
 }
 

@@ -137,6 +137,12 @@ Scalar LubricationGapLaw::coefficient(Scalar gap) const {
   return force_ * ((x > sat_ ? lambda(x) : lambdaSat_) - lambdaAct_);
 }
 
+Scalar LubricationGapLaw::logFactor(Scalar gap) const {
+  const Scalar x = scale_ * gap;
+  if (!(x < act_) || gap < 0) return 0;
+  return std::log(act_ / std::max(x, sat_));
+}
+
 Scalar LubricationGapLaw::primitive(Scalar gap) const {
   Scalar x = scale_ * gap;
   if (!(x > 0)) return 0;

@@ -297,6 +297,15 @@ class CollisionModel {
   }
   /// the lubrication coefficient of a damped pair at the gap h, and its
   /// integral over the gap from h0 to h1
+  /// The logarithmic tangential lubrication terms of a pair (j < 0: a wall)
+  /// below its activation gap, explicit in the sub-step (TangentialLubrication.hpp):
+  /// r1, r2 the Gaussian curvature radii at the closest points p1, p2
+  void addTangentialLubrication(const std::vector<CollisionBody>& bodies,
+                                const Lubrication& lubrication, int i, int j, const Vec3& shift,
+                                Scalar logFactor, Scalar r1, Scalar r2, const Vec3& n,
+                                const Vec3& p1, const Vec3& p2, const ContactSide& s1,
+                                const ContactSide& s2, Scalar subDt, std::vector<Vec3>& force,
+                                std::vector<Vec3>& torque) const;
   Scalar lubricationCoefficientAt(const DampedPair& p, Scalar h) const;
   Scalar lubricationIntegral(const DampedPair& p, Scalar h0, Scalar h1) const;
   /// the end relative normal speed of one lubricated pair (the others held)

@@ -8,6 +8,8 @@
  * for one pair of radii and the squeeze radius of the gap's paraboloid, its
  * coefficient against the gap (LubricationGapLaw),
  * which CollisionModel::dampingForces applies implicitly.
+ * The logarithmic tangential terms (TangentialLubrication) share its
+ * activation and saturation gaps.
  * Implementations: NoLubrication, StokesLubrication.
  */
 #ifndef COLLISION_LUBRICATION_HPP
@@ -28,6 +30,13 @@ class Lubrication {
   /// (r2 = infinity: a wall), squeezeRadius R* of the gap's paraboloid
   /// (GapParaboloid.hpp; spheres: r1 r2/(r1 + r2), a sphere and a wall: r1).
   virtual LubricationGapLaw gapLaw(Scalar r1, Scalar r2, Scalar squeezeRadius) const = 0;
+
+  /// Whether the logarithmic tangential and rotational terms act too
+  /// (TangentialLubrication.hpp, with the gap law's log factor).
+  virtual bool tangential() const = 0;
+
+  /// The dynamic viscosity mu [Pa s] (0: no law).
+  virtual Scalar viscosity() const = 0;
 };
 
 }  // namespace collision

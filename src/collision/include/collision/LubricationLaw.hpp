@@ -43,6 +43,8 @@ struct LubricationParameters {
   /// xi_sat, eps_sat: the correction is frozen below this gap ratio, in kSaturationRange
   Scalar saturation = 1e-3;
   static constexpr Range kSaturationRange{0, 1, true, true};
+  /// the logarithmic tangential and rotational terms too (TangentialLubrication.hpp)
+  bool tangential = true;
   /// the largest activation gap ratio
   static constexpr Scalar kMaxActivation = 1;
 
@@ -110,6 +112,9 @@ class LubricationGapLaw {
   Scalar coefficient(Scalar gap) const;
   /// G(gap) = int_0^gap c(h) dh (0 for gap <= 0, constant beyond the activation gap)
   Scalar primitive(Scalar gap) const;
+  /// L = ln(x_act/max(x, x_sat)) for a gap in [0, activation gap), 0 otherwise:
+  /// the log factor of the tangential terms (TangentialLubrication.hpp)
+  Scalar logFactor(Scalar gap) const;
 
  private:
   Scalar lambda(Scalar x) const;

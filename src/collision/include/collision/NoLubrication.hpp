@@ -16,6 +16,8 @@ class NoLubrication : public Lubrication {
  public:
   Scalar activation() const override { return 0; }
   LubricationGapLaw gapLaw(Scalar, Scalar, Scalar) const override { return LubricationGapLaw(); }
+  bool tangential() const override { return false; }
+  Scalar viscosity() const override { return 0; }
 };
 
 }  // namespace collision

@@ -11,6 +11,7 @@
  * | pairActivation | 2h/(R1 + R2) below which a pair law acts  | 0.025   | (saturation, 1] |
  * | wallActivation | h/R below which a wall law acts           | 0.075   | (saturation, 1] |
  * | saturation     | gap ratio below which it is frozen        | 1e-3    | (0, 1) |
+ * | tangential     | the logarithmic tangential terms too      | true    | true, false |
  *
  * See also: Lubrication, NoLubrication, PairModel, WallModel; docs/collisions.md.
  */
@@ -30,11 +31,12 @@ class StokesLubrication : public Lubrication {
    */
   StokesLubrication(Scalar viscosity, const LubricationParameters& parameters, bool wall);
 
-  Scalar viscosity() const { return viscosity_; }
+  Scalar viscosity() const override { return viscosity_; }
   const LubricationParameters& parameters() const { return parameters_; }
 
   Scalar activation() const override;
   LubricationGapLaw gapLaw(Scalar r1, Scalar r2, Scalar squeezeRadius) const override;
+  bool tangential() const override { return parameters_.tangential; }
 
  private:
   Scalar viscosity_;

@@ -134,7 +134,11 @@ Foam::collisionModels::contact::contact
     {
         allowed.append
         (
-            wordList({"pairActivation", "wallActivation", "saturation"})
+            wordList
+            ({
+                "pairActivation", "wallActivation", "saturation",
+                "tangentialLubrication"
+            })
         );
     }
     checkKeywords(dict, allowed);
@@ -225,6 +229,13 @@ Foam::collisionModels::contact::contact
             p.lubrication.activationRange(),
             "the wall activation gap ratio h/R, above saturation,"
         );
+        p.lubrication.tangential = immersedSpheroids::readCheckedOrDefault<bool>
+        (
+            dict, "tangentialLubrication", lawDefaults.lubrication.tangential,
+            string("yes or no (default ")
+          + (lawDefaults.lubrication.tangential ? "yes" : "no")
+          + "): the logarithmic tangential and rotational lubrication terms"
+        );
         p.viscosity = film.viscosity();
     }
     std::vector<collision::PlaneWall> walls
@@ -279,7 +290,8 @@ Foam::collisionModels::contact::contact
         Info<< ", lubrication: mu " << p.viscosity << ", activation "
             << p.lubrication.pairActivation << " (pairs) "
             << p.lubrication.wallActivation << " (walls), saturation "
-            << p.lubrication.saturation;
+            << p.lubrication.saturation << ", tangential terms "
+            << (p.lubrication.tangential ? "yes" : "no");
     }
     if (film.active())
     {

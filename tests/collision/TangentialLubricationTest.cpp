@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -23,19 +24,27 @@ constexpr Scalar kInf = std::numeric_limits<Scalar>::infinity();
 constexpr Scalar mu = 0.01, L = 2.5;
 
 /// The 12 x 12 resistance matrix R: (F1, T1, F2, T2) = R (U1, Omega1, U2, Omega2).
-using Mat12 = Eigen::Matrix<Scalar, 12, 12>;
-using Vec12 = Eigen::Matrix<Scalar, 12, 1>;
+/// The 12 x 12 resistance matrix R (row-major): (F1, T1, F2, T2) = R (U1, Omega1, U2, Omega2).
+/// Plain arrays: the product q.R q is all the tests need.
+using Mat12 = std::array<std::array<Scalar, 12>, 12>;
 
 Mat12 resistance(const TangentialLubrication& law, const Vec3& d) {
-  Mat12 R;
+  Mat12 R{};
   for (int k = 0; k < 12; ++k) {
-    Vec12 q = Vec12::Zero();
-    q(k) = 1;
-    const TangentialLubricationLoads l = law.loads(L, d, Vec3(q.segment(0, 3)), Vec3(q.segment(3, 3)),
-                                                   Vec3(q.segment(6, 3)), Vec3(q.segment(9, 3)));
-    R.col(k) << l.force1, l.torque1, -l.force1, l.torque2;
+    Vec3 motion[4] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+    motion[k / 3](k % 3) = 1;
+    const TangentialLubricationLoads l = law.loads(L, d, motion[0], motion[1], motion[2], motion[3]);
+    const Vec3 loads[4] = {l.force1, l.torque1, -l.force1, l.torque2};
+    for (int row = 0; row < 12; ++row) R[row][k] = loads[row / 3](row % 3);
   }
   return R;
+}
+
+Scalar largestEntry(const Mat12& R) {
+  Scalar m = 0;
+  for (const auto& row : R)
+    for (const Scalar v : row) m = std::max(m, std::abs(v));
+  return m;
 }
 
 }  // namespace
@@ -64,9 +73,10 @@ TEST(TangentialLubrication, SphereAndPlaneGiveGoldmanCoxBrenner) {
 
 TEST(TangentialLubrication, TwoSpheresGiveJeffreyOnishi) {
   // the ln(1/xi) coefficients of Y^A_11 (force), Y^C_11 and Y^C_12 (torques)
-  // and -Y^B_11/2 (torque of a translation) for beta = 1 and 2
+  // and -Y^B_11/2 (torque of a translation); the forces of the rotations
+  // against the closed forms of Simeonov & Calantoni (2012)
   const Vec3 d(1, 0, 0);
-  for (const Scalar beta : {1.0, 2.0}) {
+  for (const Scalar beta : {0.3, 1.0, 2.0, 5.0}) {
     const Scalar a1 = 1e-3, a2 = beta * a1, b1 = 1 + beta;
     const TangentialLubrication law(a1, a2, mu);
     const Scalar YA = 4.0 / 15 * beta * (2 + beta + 2 * beta * beta) / (b1 * b1 * b1);
@@ -78,8 +88,12 @@ TEST(TangentialLubrication, TwoSpheresGiveJeffreyOnishi) {
     EXPECT_NEAR(l.torque1.z(), t0 * YB / 2, 1e-15 * t0) << "d x u = +z: T1 = -t0 E z" << beta;
     l = law.loads(L, d, Vec3::Zero(), Vec3(0, 0, 1), Vec3::Zero(), Vec3::Zero());
     EXPECT_NEAR(l.torque1.z(), -t0 * a1 * YC11, 1e-15 * t0 * a1) << beta;
+    EXPECT_NEAR(l.force1.y(), f0 * a1 * YB * 2 / 3, 1e-15 * f0 * a1) << "Omega1 x d = +y" << beta;
     l = law.loads(L, d, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3(0, 0, 1));
     EXPECT_NEAR(l.torque1.z(), -t0 * a1 * YC12, 1e-15 * t0 * a1) << beta;
+    EXPECT_NEAR(l.force1.y(), -f0 * a1 * 2 * beta * beta * (1 + 4 * beta) / (15 * b1 * b1),
+                1e-15 * f0 * a1)
+        << beta;
   }
   // equal spheres: Y^A_11 = (1/6) ln(1/xi)
   const TangentialLubrication equal(1, 1, 1);
@@ -111,16 +125,26 @@ TEST(TangentialLubrication, OneSymmetricDissipativeResistance) {
   const Vec3 d = Vec3(1, 2, -2).normalized();
   for (const Scalar a2 : {0.5e-3, 1e-3, 3e-3}) {
     const Mat12 R = resistance(TangentialLubrication(1e-3, a2, mu), d);
-    EXPECT_LT((R - R.transpose()).norm(), 1e-12 * R.norm()) << a2;
+    const Scalar scale = largestEntry(R);
+    ASSERT_GT(scale, 0) << a2;
+    for (int row = 0; row < 12; ++row)
+      for (int col = 0; col < row; ++col)
+        EXPECT_NEAR(R[row][col], R[col][row], 1e-12 * scale) << a2 << " " << row << " " << col;
     // loads oppose the motion: the power q.R q is never positive, and some motions dissipate
     std::mt19937 rng(7);
     std::normal_distribution<Scalar> normal;
     Scalar largestDissipation = 0;
     for (int trial = 0; trial < 2000; ++trial) {
-      Vec12 q;
-      for (int k = 0; k < 12; ++k) q(k) = normal(rng);
-      const Scalar power = q.dot(R * q);
-      EXPECT_LE(power, 1e-12 * R.norm() * q.squaredNorm()) << a2;
+      std::array<Scalar, 12> q;
+      Scalar qq = 0;
+      for (Scalar& v : q) {
+        v = normal(rng);
+        qq += v * v;
+      }
+      Scalar power = 0;
+      for (int row = 0; row < 12; ++row)
+        for (int col = 0; col < 12; ++col) power += q[row] * R[row][col] * q[col];
+      EXPECT_LE(power, 1e-12 * scale * qq) << a2;
       largestDissipation = std::max(largestDissipation, -power);
     }
     EXPECT_GT(largestDissipation, 0) << a2;

@@ -31,6 +31,7 @@ Collision: lubricationContact (e_dry 0.97, T_c = 10 dt, 10 sub-steps per contact
 activation 0.075 a, saturation 1e-3 a), penaltyRatio 1e-3, virtualMass 0.5.
 """
 import argparse
+import json
 import math
 import os
 import shutil
@@ -205,6 +206,23 @@ def run_one(name, cpd, force, quick, max_overlap=None, saturation=None):
               ignore_extra=True)
 
 
+def write_metrics(rows):
+    """results/metrics.json: max_abs_deviation_<cpd>, the largest |e/e_dry - exp(-35/St)| over
+    the cases run with the default maxOverlap and saturation at that resolution, and
+    cases_<cpd>, how many cases that is (five when the resolution is complete)."""
+    metrics = {}
+    default = [r for r in rows if r["maxOverlap"] == "0.1" and r["saturation"] == "0.001"]
+    for cpd in sorted({int(r["cpd"]) for r in default}):
+        sel = [r for r in default if int(r["cpd"]) == cpd]
+        metrics[f"max_abs_deviation_{cpd}"] = round(
+            max(abs(float(r["e_over_edry"]) - float(r["master"])) for r in sel), 4)
+        metrics[f"cases_{cpd}"] = len(sel)
+    with open(os.path.join(RESULTS, "metrics.json"), "w") as f:
+        json.dump(metrics, f, indent=1, sort_keys=True)
+        f.write("\n")
+    print("wetRebound: results/metrics.json", metrics)
+
+
 def do_plot():
     import matplotlib
     matplotlib.use("Agg")
@@ -236,6 +254,7 @@ def do_plot():
     with open(os.path.join(RESULTS, "table.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
+    write_metrics(rows)
 
     fig, ax = plt.subplots(figsize=(9, 4))
     st = np.logspace(0.7, 3.2, 200)

@@ -15,6 +15,7 @@ the friction set per run. Results: results/runs.csv (rebound quantities), result
 results/table.md, results/trajectory.png.
 """
 import argparse
+import json
 import math
 import os
 import shutil
@@ -156,6 +157,25 @@ def run_one(friction, cpd, force, quick):
               ignore_extra=True)
 
 
+def write_metrics(rows):
+    """results/metrics.json, per run (friction 0 -> mu0, 0.3 -> mu0.3): the normal and tangential
+    rebound ratios u_n out/u_n in and u_t out/u_t in, the rebound angle, the spin after the
+    rebound, the impacts and the largest overlap over the small semi-axis (cap 0.1)."""
+    metrics = {}
+    for r in rows:
+        key = f"mu{float(r['friction']):g}_c{r['cpd']}"
+        metrics[f"{key}_normal_rebound_ratio"] = round(float(r["u_n_out"]) / float(r["u_n_in"]), 4)
+        metrics[f"{key}_tangential_rebound_ratio"] = round(
+            float(r["u_t_out"]) / float(r["u_t_in"]), 4)
+        metrics[f"{key}_rebound_angle_deg"] = float(r["rebound_angle_deg"])
+        metrics[f"{key}_omega_y_out"] = float(r["omega_y_out"])
+        metrics[f"{key}_impacts"] = int(r["impacts"])
+        metrics[f"{key}_max_overlap_b"] = float(r["max_overlap_amin"])
+    with open(os.path.join(RESULTS, "metrics.json"), "w") as f:
+        json.dump(metrics, f, indent=1, sort_keys=True)
+        f.write("\n")
+
+
 def do_plot():
     import matplotlib
     matplotlib.use("Agg")
@@ -176,6 +196,7 @@ def do_plot():
     with open(os.path.join(RESULTS, "table.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
+    write_metrics(rows)
     fig, axs = plt.subplots(1, 3, figsize=(12, 3.6))
     for r in rows:
         x = analyse(os.path.join(RESULTS, f"{r['name']}.h5"))

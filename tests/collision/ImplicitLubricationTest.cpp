@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 using namespace collision;
 
@@ -83,6 +84,30 @@ TEST(ImplicitLubrication, OnePairIsExactBackwardEuler) {
   EXPECT_NEAR(F[0].x(), 0, 1e-15);
   EXPECT_NEAR(T[0].norm(), 0, 1e-15) << "the normal through the centre: no torque";
   EXPECT_EQ(model.statistics().dampingSweeps, 2) << "one sweep solves, one confirms";
+}
+
+TEST(ImplicitLubrication, APrescribedBodyReportsTheLawsForceAtItsVelocity) {
+  // a body of infinite mass (prescribed motion) 0.01 a above the floor
+  // approaching at 1 mm/s: nothing can move, the impulse is the law's at the
+  // imposed velocity, the force the mean coefficient over the path times u
+  const Scalar a = 2e-3, mu = 0.07, dt = 1e-4, u = -1e-3;
+  std::vector<RigidBody> b{sphere(a, Vec3(0, 0, a * 1.01), Vec3(0, 0, u))};
+  CollisionModel model = makeModel(lubricated(mu), {floorWall});
+  std::vector<CollisionBody> cb = collisionBodies(b);
+  cb[0].mass = std::numeric_limits<Scalar>::infinity();
+  cb[0].inverseInertia.setZero();
+  std::vector<Vec3> F, T;
+  model.forces(cb, 10 * dt, dt, F, T);
+  ASSERT_EQ(model.dampedPairs().size(), 1u);
+  const Scalar c = model.dampedPairs()[0].lubrication;
+  ASSERT_GT(c, 0);
+  const std::vector<Vec3> v{cb[0].velocity}, w{cb[0].angularVelocity};
+  model.dampingForces(cb, v, w, {}, {}, dt, F, T);
+  // the mean coefficient over the path u dt (5e-3 of the gap) times u
+  const Scalar mean = model.dampedPairs()[0].lubricationMean;
+  EXPECT_NEAR(F[0].z(), -mean * u, 1e-9 * mean * std::abs(u));
+  EXPECT_NEAR(mean / c, 1, 5e-3) << "about half the path's relative gap change";
+  EXPECT_GT(F[0].z(), 0) << "the film pushes back on the approaching body";
 }
 
 TEST(ImplicitLubrication, AStackIsSolvedTogetherAndLosesEnergy) {

@@ -605,8 +605,16 @@ void CollisionModel::dampingForces(const std::vector<CollisionBody>& bodies,
     ++sweeps;
     Scalar largestChange = 0;
     for (std::size_t k = 0; k < m; ++k) {
-      if (!(wk[k] > 0)) continue;
       const DampedPair& p = damped_[k];
+      if (!(wk[k] > 0)) {
+        // neither side can move (a wall and a prescribed body, two prescribed
+        // bodies): the velocities are imposed and the impulse is the law's at
+        // them; it changes no motion, the bodies report it as their load
+        const Scalar u = normalSpeed(p, v, w);
+        impulse_[k] = (p.lubricated ? -lubricationIntegral(p, p.gap, p.gap + u * subDt) : 0) -
+                      subDt * p.film * (u - uRef[k]);
+        continue;
+      }
       // the impulse lambda on the second body along n with
       // lambda = -I(u) - subDt D (u - u_ref), u = u_n(end), I(u) the integral
       // of the lubrication coefficient over the gap path from gap to

@@ -298,6 +298,12 @@ void immersedBodiesTests::testBadInput(const Time& runTime, const fvMesh& mesh)
     );
     expectFatalIOError
     (
+        construct(withBody("semiAxes (0.1 0.05 0.05); density 1100; centre (0.5 0.5 0.5); motion { type prescribed; frozen maybe; }")),
+        {"frozen", "yes or no", fname},
+        "a frozen entry that is not yes or no"
+    );
+    expectFatalIOError
+    (
         construct(withBody("semiAxes (0.1 0.05 0.05); density 1100; centre middle; motion { type fixed; }")),
         {"'centre'", "expected", fname},
         "word where a vector is expected"

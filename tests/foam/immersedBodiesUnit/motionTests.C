@@ -11,7 +11,8 @@ Description
       centre by the integral, the attitude by exp(t omega)), a piecewise
       linear table velocity (exact integral), a sine angular velocity about
       a fixed axis (midpoint rule: error <= T dt^2/24 max|omega''|, order
-      2), a sine velocity (the header promises any Function1);
+      2), a sine velocity (the header promises any Function1); frozen:
+      the velocities follow a table, centre and orientation stay exactly;
     - free under a constant force: x0 + v0 t + F t^2/(2m) (the trapezoidal
       centre update is exact for a linear velocity: round-off only); a
       sphere under a constant torque parallel to omega: angle
@@ -288,6 +289,40 @@ void testPrescribed()
               + " <= 2 T dt^2/24 A (2 pi f)^2 = " + str(bound)
             );
         }
+    }
+
+    // frozen: the velocities follow the table, the centre and orientation
+    // stay exactly where they are
+    {
+        immersedBody body = makeBody
+        (
+            "semiAxes (0.2 0.1 0.1); density 1100; centre (0.1 0.2 0.3);"
+            "orientation (0.5 0.5 0.5 0.5);"
+            "motion { type prescribed; frozen yes;"
+            " velocity table ((0 (0 0 -1)) (1 (0 0 -3)));"
+            " angularVelocity (0 1 0); }",
+            "prescribedFrozen"
+        );
+        body.motion().initialise(body.state(), 0);
+        const bodyState s0 = body.state();
+        for (label i = 0; i < 50; ++i)
+        {
+            advance(body, 0.01*i, 0.01, vector(1, 1, 1), vector(1, 1, 1));
+        }
+        check
+        (
+            body.motion().moves()
+         && body.state().centre == s0.centre
+         && body.state().orientation == s0.orientation,
+            "prescribed frozen: centre and orientation unchanged (exactly)"
+        );
+        check
+        (
+            mag(body.state().velocity - vector(0, 0, -2)) < 1e-12
+         && body.state().angularVelocity == vector(0, 1, 0),
+            "prescribed frozen: the velocities of the table at t = 0.5 ("
+          + str(body.state().velocity.z()) + ", expected -2)"
+        );
     }
 }
 

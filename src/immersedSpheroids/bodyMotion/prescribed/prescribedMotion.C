@@ -79,7 +79,16 @@ Foam::bodyMotions::prescribed::prescribed(const word& type, const dictionary& di
     bodyMotion(type),
     velocity_(readFunction(dict, "velocity")),
     angularVelocity_(readFunction(dict, "angularVelocity")),
-    integrable_(true)
+    integrable_(true),
+    frozen_
+    (
+        immersedSpheroids::readCheckedOrDefault<bool>
+        (
+            dict, "frozen", false,
+            "yes or no (default no): keep the centre and orientation and"
+            " impose only the velocities"
+        )
+    )
 {
     // OpenFOAM v1912 implements Function1::integrate only for these types
     // (calling it on the others aborts; probing it is unsafe: the table's
@@ -97,7 +106,7 @@ Foam::bodyMotions::prescribed::prescribed(const word& type, const dictionary& di
         wordList
         ({
             "type", "velocity", "velocityCoeffs",
-            "angularVelocity", "angularVelocityCoeffs"
+            "angularVelocity", "angularVelocityCoeffs", "frozen"
         })
     );
 }
@@ -123,6 +132,12 @@ void Foam::bodyMotions::prescribed::advance
     const vector&
 ) const
 {
+    state.velocity = velocity_->value(t + dt);
+    state.angularVelocity = angularVelocity_->value(t + dt);
+    if (frozen_)
+    {
+        return;
+    }
     if (integrable_)
     {
         state.centre += velocity_->integrate(t, t + dt);
@@ -140,8 +155,6 @@ void Foam::bodyMotions::prescribed::advance
     const vector omegaMid = angularVelocity_->value(t + 0.5*dt);
     state.orientation = rotationQuaternion(dt*omegaMid)*state.orientation;
     state.orientation.normalize();
-    state.velocity = velocity_->value(t + dt);
-    state.angularVelocity = angularVelocity_->value(t + dt);
 }
 
 

@@ -88,8 +88,9 @@ TEST(ImplicitLubrication, OnePairIsExactBackwardEuler) {
 
 TEST(ImplicitLubrication, APrescribedBodyReportsTheLawsForceAtItsVelocity) {
   // a body of infinite mass (prescribed motion) 0.01 a above the floor
-  // approaching at 1 mm/s: nothing can move, the impulse is the law's at the
-  // imposed velocity, the force the mean coefficient over the path times u
+  // approaching at 1 mm/s: no velocity can change, the impulse is the law's at
+  // the imposed velocity, the force the mean coefficient over the path it
+  // moves in the sub-step times u
   const Scalar a = 2e-3, mu = 0.07, dt = 1e-4, u = -1e-3;
   std::vector<RigidBody> b{sphere(a, Vec3(0, 0, a * 1.01), Vec3(0, 0, u))};
   CollisionModel model = makeModel(lubricated(mu), {floorWall});
@@ -108,6 +109,12 @@ TEST(ImplicitLubrication, APrescribedBodyReportsTheLawsForceAtItsVelocity) {
   EXPECT_NEAR(F[0].z(), -mean * u, 1e-9 * mean * std::abs(u));
   EXPECT_NEAR(mean / c, 1, 5e-3) << "about half the path's relative gap change";
   EXPECT_GT(F[0].z(), 0) << "the film pushes back on the approaching body";
+  // frozen (a prescribed velocity at a fixed place): the gap does not change,
+  // the force is the coefficient at the gap times u
+  cb[0].stationary = true;
+  model.forces(cb, 10 * dt, dt, F, T);
+  model.dampingForces(cb, v, w, {}, {}, dt, F, T);
+  EXPECT_NEAR(F[0].z(), -c * u, 1e-9 * c * std::abs(u));
 }
 
 TEST(ImplicitLubrication, AStackIsSolvedTogetherAndLosesEnergy) {

@@ -585,6 +585,10 @@ void CollisionModel::dampingForces(const std::vector<CollisionBody>& bodies,
     if (p.second >= 0) rel += vv[p.second] + ww[p.second].cross(p.arm2);
     return rel.dot(p.normal);
   };
+  // does the gap of a pair change with its velocities (a side that moves:
+  // free or prescribed; not a wall, a fixed or a frozen body)?
+  auto moves = [&](int b) { return b >= 0 && bodies[b].movable && !bodies[b].stationary; };
+  auto onPath = [&](const DampedPair& p) { return moves(p.first) || moves(p.second); };
   // per pair: the inverse effective mass along its normal and the reference speed
   std::vector<Scalar>& wk = pairInverseMass_;
   std::vector<Scalar>& uRef = pairReferenceSpeed_;
@@ -607,12 +611,17 @@ void CollisionModel::dampingForces(const std::vector<CollisionBody>& bodies,
     for (std::size_t k = 0; k < m; ++k) {
       const DampedPair& p = damped_[k];
       if (!(wk[k] > 0)) {
-        // neither side can move (a wall and a prescribed body, two prescribed
-        // bodies): the velocities are imposed and the impulse is the law's at
-        // them; it changes no motion, the bodies report it as their load
+        // neither side responds to the load (a wall and a prescribed body,
+        // two prescribed bodies): the velocities are imposed and the impulse
+        // is the law's at them, over the gap path when a side moves and at
+        // the gap when none does (a frozen prescribed body); it changes no
+        // motion, the bodies report it as their load
         const Scalar u = normalSpeed(p, v, w);
-        impulse_[k] = (p.lubricated ? -lubricationIntegral(p, p.gap, p.gap + u * subDt) : 0) -
-                      subDt * p.film * (u - uRef[k]);
+        const Scalar lubrication =
+            !p.lubricated ? 0
+            : onPath(p) ? lubricationIntegral(p, p.gap, p.gap + u * subDt)
+                        : lubricationCoefficientAt(p, p.gap) * u * subDt;
+        impulse_[k] = -lubrication - subDt * p.film * (u - uRef[k]);
         continue;
       }
       // the impulse lambda on the second body along n with
@@ -649,7 +658,7 @@ void CollisionModel::dampingForces(const std::vector<CollisionBody>& bodies,
   // the coefficient each lubricated pair received: the mean over its path
   for (DampedPair& p : damped_) {
     if (!p.lubricated) continue;
-    const Scalar dh = normalSpeed(p, v, w) * subDt;
+    const Scalar dh = onPath(p) ? normalSpeed(p, v, w) * subDt : 0;
     p.lubricationMean = std::abs(dh) > 1e-12 * (std::abs(p.gap) + p.radius1)
                             ? lubricationIntegral(p, p.gap, p.gap + dh) / dh
                             : lubricationCoefficientAt(p, p.gap);

@@ -70,6 +70,7 @@ collision::CollisionBody Foam::coupledBodySet::collisionBody
     c.velocity = s.velocity;
     c.angularVelocity = s.angularVelocity;
     c.movable = body.motion().moves();
+    c.stationary = body.motion().frozen();
     c.filmGap = filmGap_;
     c.externalForce = toCore(externalForce(i));
     c.mass =

@@ -311,7 +311,7 @@ void testPrescribed()
         }
         check
         (
-            body.motion().moves()
+            body.motion().moves() && body.motion().frozen()
          && body.state().centre == s0.centre
          && body.state().orientation == s0.orientation,
             "prescribed frozen: centre and orientation unchanged (exactly)"

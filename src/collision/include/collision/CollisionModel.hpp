@@ -93,6 +93,8 @@ struct CollisionBody {
   Scalar mass = 1;
   Mat3 inverseInertia = Mat3::Zero();  ///< world frame
   bool movable = true;                 ///< false: fixed (infinitely heavy)
+  bool stationary = false;             ///< keeps its place while its velocities are imposed
+                                       ///< (a frozen prescribed body): its gaps do not change
   /// the thickness below which the flow solver cannot resolve a film at this
   /// body (its cell size; FilmCorrection); 0: no film correction
   Scalar filmGap = 0;

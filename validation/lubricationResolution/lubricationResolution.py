@@ -54,7 +54,8 @@ FIELDS = ["name", "cpd", "gap", "cells", "dt", "steps", "F_hydro", "F_collision"
 
 def brenner(gap):
     """Brenner's (1961) F/(6 pi mu a U) of a sphere approaching a plane at the gap (units of
-    the radius a = 1 here: gap/a), the series summed until its terms fall below 1e-14."""
+    the radius a = 1 here: gap/a), the series summed until its terms fall below 1e-14 of the sum
+    (an error after a million terms)."""
     alpha = math.acosh(1 + gap)
     s = 0.0
     n = 1
@@ -64,8 +65,11 @@ def brenner(gap):
         den = 4 * math.sinh((n + 0.5) * alpha) ** 2 - k * k * math.sinh(alpha) ** 2
         term = n * (n + 1) / ((2 * n - 1) * (2 * n + 3)) * (num / den - 1)
         s += term
-        if abs(term) < 1e-14 * abs(s) or n > 100000:
+        if abs(term) < 1e-14 * abs(s):
             break
+        if n >= 1000000:
+            raise RuntimeError(f"brenner: the series at gap/a = {gap} has not converged in {n} "
+                               f"terms (last term {term:.3e}, sum {s:.6e})")
         n += 1
     return 4.0 / 3.0 * math.sinh(alpha) * s
 

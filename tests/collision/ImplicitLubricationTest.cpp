@@ -117,6 +117,48 @@ TEST(ImplicitLubrication, APrescribedBodyReportsTheLawsForceAtItsVelocity) {
   EXPECT_NEAR(F[0].z(), -c * u, 1e-9 * c * std::abs(u));
 }
 
+TEST(ImplicitLubrication, TheResolvedGapFormActsAtTheBodiesCellSize) {
+  // a sphere 0.1 a above the floor and a second sphere 0.1 a above it (gap
+  // ratios beyond the ratio form's 0.075 and 0.025): lubricated only in the
+  // resolved-gap form (resolved gap 0.6 x cell = 0.15 a, acting below 0.6 a),
+  // at the coefficient of its law; without a cell size that form is an error
+  // naming its keyword
+  const Scalar a = 2e-3, mu = 0.07, dt = 1e-4, cell = 0.25 * a;
+  const Scalar inf = std::numeric_limits<Scalar>::infinity();
+  const std::vector<RigidBody> b{sphere(a, Vec3(0, 0, 1.1 * a), Vec3(0, 0, -1e-3)),
+                                 sphere(a, Vec3(0, 0, 3.2 * a), Vec3(0, 0, -2e-3))};
+  for (const bool resolvedGap : {false, true}) {
+    ModelSetup s = lubricated(mu);
+    if (resolvedGap) {
+      s.laws.lubrication.wallResolvedGapCells = s.laws.lubrication.pairResolvedGapCells = 0.6;
+    }
+    CollisionModel model = makeModel(s, {floorWall});
+    std::vector<CollisionBody> cb = collisionBodies(b);
+    for (CollisionBody& c : cb) c.cellSize = cell;
+    std::vector<Vec3> F, T;
+    model.forces(cb, 10 * dt, dt, F, T);
+    int lubricated = 0;
+    for (const DampedPair& d : model.dampedPairs()) {
+      if (d.lubrication <= 0) continue;
+      ++lubricated;
+      const bool wall = d.second < 0;
+      const LubricationGapLaw law(a, wall ? inf : a, mu, s.laws.lubrication, wall ? a : 0.5 * a, cell);
+      const Scalar expected = law.coefficient(0.1 * a);
+      EXPECT_NEAR(d.lubrication, expected, 1e-9 * expected) << (wall ? "wall" : "pair");
+    }
+    EXPECT_EQ(lubricated, resolvedGap ? 2 : 0);
+    if (resolvedGap) {
+      for (CollisionBody& c : cb) c.cellSize = 0;
+      try {
+        model.forces(cb, 10 * dt, dt, F, T);
+        FAIL() << "the resolved-gap form without a cell size accepted";
+      } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("ResolvedGapCells"), std::string::npos) << e.what();
+      }
+    }
+  }
+}
+
 TEST(ImplicitLubrication, AStackIsSolvedTogetherAndLosesEnergy) {
   // floor, sphere A just above it, sphere B just above A, C off to the side
   // touching B obliquely: three coupled pairs, all stiff

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -130,4 +132,86 @@ TEST(LubricationLaw, TheIntegralOverTheGapMatchesQuadratureAndTheCoefficient) {
   }
   // the wall form through the pair function with an infinite second radius
   EXPECT_EQ(pairLubricationIntegral(1e-4, 1e-6, a, inf, mu, p), wallLubricationIntegral(1e-4, 1e-6, a, mu, p));
+}
+
+TEST(LubricationLaw, TheResolvedGapIsCellsOfTheCellSizeAsARatioOfTheRadii) {
+  const Scalar inf = std::numeric_limits<Scalar>::infinity();
+  LubricationParameters p;
+  p.wallResolvedGapCells = 0.6;
+  p.pairResolvedGapCells = 1.5;
+  const Scalar a = 0.5, cell = 1.0 / 64, k = LubricationParameters::kActivationOverResolvedGap;
+  EXPECT_TRUE(p.resolvedGapForm(true));
+  EXPECT_DOUBLE_EQ(p.resolvedGapRatio(a, inf, cell), 0.6 * cell / a);
+  EXPECT_DOUBLE_EQ(p.activationRatio(a, inf, cell), k * 0.6 * cell / a);
+  EXPECT_DOUBLE_EQ(p.activationGap(a, inf, cell), k * 0.6 * cell);
+  EXPECT_DOUBLE_EQ(p.resolvedGapRatio(a, 2 * a, cell), 2 * 1.5 * cell / (3 * a));
+  EXPECT_DOUBLE_EQ(p.activationGap(a, 2 * a, cell), k * 1.5 * cell);
+  // the activation at most the laws' range, at least the saturation ratio
+  EXPECT_EQ(p.activationRatio(0.01 * cell, inf, cell), LubricationParameters::kMaxActivation);
+  EXPECT_EQ(p.activationRatio(1e6 * cell, inf, cell), p.saturation);
+  // a side given 0 cells keeps the ratio form
+  p.pairResolvedGapCells = 0;
+  EXPECT_FALSE(p.resolvedGapForm(false));
+  EXPECT_EQ(p.resolvedGapRatio(a, a, cell), 0);
+  EXPECT_EQ(p.activationRatio(a, a, cell), p.pairActivation);
+  EXPECT_EQ(p.activationRatio(a, a, 0), p.pairActivation);
+  // the resolved-gap form needs the cell size
+  try {
+    p.activationRatio(a, inf, 0);
+    FAIL() << "no cell size accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("wallResolvedGapCells"), std::string::npos) << e.what();
+  }
+  p.wallResolvedGapCells = -1;
+  EXPECT_THROW(p.validate(), std::invalid_argument);
+  p.wallResolvedGapCells = 9;
+  EXPECT_THROW(p.validate(), std::invalid_argument);
+}
+
+TEST(LubricationLaw, TheResolvedGapFormAddsWhatTheGapWidenedInQuadratureLacks) {
+  // wall (A = 1, B = 1/5): c = 6 pi mu a [u(x) - u(x_act)] with
+  // u(x) = 1/x - 1/s + (1/10) ln(1 + x_d^2/x^2), s = sqrt(x^2 + x_d^2), so that
+  // the flow's lambda at the widened gap s plus the correction is lambda at x
+  // up to the C term and the shift at x_act
+  const Scalar inf = std::numeric_limits<Scalar>::infinity();
+  LubricationParameters p;
+  p.wallResolvedGapCells = 0.6;
+  const Scalar a = 0.5, mu = 2e-3, cell = 1.0 / 8;
+  const Scalar xd = 0.6 * cell / a, xAct = 4 * xd;
+  const LubricationGapLaw law(a, inf, mu, p, a, cell);
+  const auto u = [&](Scalar x) {
+    return 1 / x - 1 / std::hypot(x, xd) + 0.1 * std::log1p(xd * xd / (x * x));
+  };
+  EXPECT_EQ(law.coefficient(xAct * a), 0);
+  EXPECT_EQ(law.coefficient(1.01 * xAct * a), 0);
+  EXPECT_LT(law.coefficient(0.999999 * xAct * a), 1e-6 * law.coefficient(0.5 * xAct * a));
+  for (const Scalar x : {0.9 * xAct, 0.3 * xAct, 0.01, 0.002}) {
+    const Scalar expected = 6 * kPi * mu * a * (u(x) - u(xAct));
+    EXPECT_NEAR(law.coefficient(x * a), expected, 1e-12 * expected) << x;
+    // the flow's lambda at s plus the correction (before the shift) is lambda at x
+    const Scalar s = std::hypot(x, xd);
+    const Scalar cTerm = x * std::log(x) / 21 - s * std::log(s) / 21;
+    EXPECT_NEAR(wallLubricationLambda(s) + u(x), wallLubricationLambda(x) + cTerm, 1e-12 / x) << x;
+    EXPECT_NEAR(law.logFactor(x * a),
+                0.5 * (std::log1p(xd * xd / (x * x)) - std::log1p(xd * xd / (xAct * xAct))), 1e-12);
+  }
+  // frozen below the saturation gap, off in contact and beyond the activation gap
+  EXPECT_EQ(law.coefficient(1e-4 * a), law.coefficient(p.saturation * a));
+  EXPECT_EQ(law.coefficient(-1e-6), 0);
+  EXPECT_EQ(law.logFactor(xAct * a), 0);
+  // the primitive against a midpoint quadrature of the coefficient, across
+  // the saturation and activation gaps
+  for (auto [h0, h1] : {std::pair<Scalar, Scalar>{2 * xAct * a, 0.2 * p.saturation * a},
+                        {0.5 * xAct * a, 0.3 * xAct * a}}) {
+    const int n = 400000;
+    Scalar sum = 0;
+    const Scalar dh = (h1 - h0) / n;
+    for (int i = 0; i < n; ++i) sum += law.coefficient(h0 + (i + 0.5) * dh) * dh;
+    EXPECT_NEAR(law.primitive(h1) - law.primitive(h0), sum, 1e-6 * std::abs(sum)) << h0 << " " << h1;
+  }
+  // a resolved gap whose activation falls under the saturation gap: no law
+  const LubricationGapLaw none(1e4 * cell, inf, mu, p, 1e4 * cell, cell);
+  EXPECT_EQ(none.coefficient(0), 0);
+  EXPECT_EQ(none.primitive(0.5 * cell), 0);
+  EXPECT_EQ(none.logFactor(0), 0);
 }

@@ -39,19 +39,22 @@ TEST(ModelFactory, SpringDashpotHasNoLubricationReachTheLubricatedOneHas) {
   const auto pair = PairModel::New("springDashpot", p);
   const auto wall = WallModel::New("springDashpot", p);
   EXPECT_EQ(pair->name(), "springDashpot");
-  EXPECT_EQ(pair->lubrication().activation(), 0);
-  EXPECT_EQ(wall->lubrication().activation(), 0);
+  EXPECT_FALSE(pair->lubrication().acts());
+  EXPECT_FALSE(wall->lubrication().acts());
+  EXPECT_EQ(pair->lubrication().reach(1, 1), 0);
   EXPECT_EQ(pair->contact().restitution(), p.contact.restitution);
 
   const auto lubricatedPair = PairModel::New("lubricatedSpringDashpot", p);
   const auto lubricatedWall = WallModel::New("lubricatedSpringDashpot", p);
-  EXPECT_EQ(lubricatedPair->lubrication().activation(), p.lubrication.pairActivation);
-  EXPECT_EQ(lubricatedWall->lubrication().activation(), p.lubrication.wallActivation);
-  // the law of a sphere at a wall inside its activation gap acts
   const Scalar a = 1e-3;
-  EXPECT_GT(lubricatedWall->lubrication().gapLaw(a, std::numeric_limits<Scalar>::infinity(), a)
-                .coefficient(0.01 * a),
-            0);
+  const Scalar inf = std::numeric_limits<Scalar>::infinity();
+  EXPECT_TRUE(lubricatedPair->lubrication().acts());
+  EXPECT_DOUBLE_EQ(lubricatedPair->lubrication().activationGap(a, a, 0),
+                   p.lubrication.pairActivation * a);
+  EXPECT_DOUBLE_EQ(lubricatedWall->lubrication().activationGap(a, inf, 0),
+                   p.lubrication.wallActivation * a);
+  // the law of a sphere at a wall inside its activation gap acts
+  EXPECT_GT(lubricatedWall->lubrication().gapLaw(a, inf, a, 0).coefficient(0.01 * a), 0);
   // a lubricated model needs the viscosity from its caller
   EXPECT_THROW(PairModel::New("lubricatedSpringDashpot", InteractionParameters()),
                std::invalid_argument);

@@ -206,9 +206,11 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
     if (i < n) lastContactForce_[i] -= c.force;
     if (j >= 0 && j < n) lastContactForce_[j] += c.force;
   }
-  const Scalar pairActivation = pair_->lubrication().activation();
-  const Scalar wallActivation = wall_->lubrication().activation();
+  const Lubrication& pairLubrication = pair_->lubrication();
+  const Lubrication& wallLubrication = wall_->lubrication();
   const bool films = film_ != nullptr;
+  Scalar largestCellSize = 0;
+  for (int i = 0; i < n; ++i) largestCellSize = std::max(largestCellSize, bodies[i].cellSize);
 
   // reach of each body: half the largest activation gap it can take part in
   centres_.resize(n);
@@ -216,7 +218,9 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
   reach_.resize(n);
   for (int i = 0; i < n; ++i) {
     const ellipsoids::Ellipsoid& e = bodies[i].shape;
-    reach_[i] = pairActivation > 0 ? 0.5 * pairActivation * e.maxOfMaxCurvatureRadius() : 0;
+    reach_[i] = pairLubrication.acts()
+                    ? pairLubrication.reach(e.maxOfMaxCurvatureRadius(), largestCellSize)
+                    : 0;
     if (films) reach_[i] = std::max(reach_[i], 0.5 * bodies[i].filmGap);
     centres_[i] = e.centre();
     radii_[i] = e.maxSemiAxis() + reach_[i];
@@ -296,7 +300,9 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
       const WallDistance d = wallDistance(bodies[i].shape, walls_[w]);
       // (a body that may reach the activation gap within the sub-step too)
       const Scalar lubricationReach =
-          wallActivation > 0 ? wallActivation * bodies[i].shape.maxOfMaxCurvatureRadius() +
+          wallLubrication.acts()
+              ? wallLubrication.activationGap(bodies[i].shape.maxOfMaxCurvatureRadius(), kInf,
+                                              bodies[i].cellSize) +
                             2 * subDt *
                                 (bodies[i].velocity.norm() +
                                  bodies[i].angularVelocity.norm() * bodies[i].shape.maxSemiAxis())
@@ -405,16 +411,20 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
   // implicitly by dampingForces(); the curvature radii only when the gap is
   // below the largest activation gap the radii allow (Gaussian radius <=
   // largest curvature radius) or below the film gap
-  const Scalar rBound = b1.shape.maxOfMaxCurvatureRadius() +
-                        (wall ? 0 : bodies[j].shape.maxOfMaxCurvatureRadius());
-  const Scalar activation = model.lubrication().activation();
-  const Scalar reachBound = wall ? activation * rBound : 0.5 * activation * rBound;
+  const Lubrication& lubrication = model.lubrication();
+  const Scalar cellSize = wall ? b1.cellSize : std::max(b1.cellSize, bodies[j].cellSize);
+  const Scalar reachBound =
+      lubrication.acts()
+          ? lubrication.activationGap(b1.shape.maxOfMaxCurvatureRadius(),
+                                      wall ? kInf : bodies[j].shape.maxOfMaxCurvatureRadius(),
+                                      cellSize)
+          : 0;
   // the correction is integrated over the gap path of the sub-step
   // (dampingForces): a pair enters the solve when its gap may cross the range
   // [0, activation) within the sub-step (twice the start speed's travel):
   // approaching from beyond the activation gap, or leaving a contact
   const Scalar travel = 2 * std::abs(un) * subDt;
-  const bool lubricating = activation > 0 && gap + travel >= 0 &&
+  const bool lubricating = lubrication.acts() && gap + travel >= 0 &&
                            gap - travel < reachBound && (gap >= 0 || un > 0) &&
                            (gap < reachBound || un < 0);
   const Scalar filmGap =
@@ -437,17 +447,17 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
     pair.gap = gap;
     // with the radii known, the activation gap itself: a pair whose gap cannot
     // reach it within the sub-step has no lubrication to integrate
-    const Scalar activationGap = wall ? activation * r1 : 0.5 * activation * (r1 + r2);
+    const Scalar activationGap = lubrication.activationGap(r1, r2, cellSize);
     if (lubricating && gap - travel < activationGap) {
       pair.lubricated = true;
       pair.radius1 = r1;
       pair.radius2 = r2;
-      pair.law = model.lubrication().gapLaw(r1, r2, squeezeRadius);
+      pair.law = lubrication.gapLaw(r1, r2, squeezeRadius, cellSize);
       pair.lubrication = pair.law.coefficient(gap);
       pair.startPrimitive = pair.law.primitive(gap);
       if (pair.lubrication > 0) ++statistics_.lubricated;
       if (model.lubrication().tangential()) {
-        addTangentialLubrication(bodies, model.lubrication(), i, j, shift, pair.law.logFactor(gap),
+        addTangentialLubrication(bodies, lubrication, i, j, shift, pair.law.logFactor(gap),
                                  r1, r2, n, p1, p2, s1, s2, subDt, force, torque);
       }
     }

@@ -24,6 +24,34 @@ void LubricationParameters::validate() const {
   require(activationRange().contains(wallActivation),
           outOfRangeMessage("wallActivation", wallActivation, activationRange()) +
               " (above saturation)");
+  require(pairResolvedGapCells == 0 || kCellsRange.contains(pairResolvedGapCells),
+          outOfRangeMessage("pairResolvedGapCells", pairResolvedGapCells, kCellsRange) +
+              " (or 0: the ratio pairActivation)");
+  require(wallResolvedGapCells == 0 || kCellsRange.contains(wallResolvedGapCells),
+          outOfRangeMessage("wallResolvedGapCells", wallResolvedGapCells, kCellsRange) +
+              " (or 0: the ratio wallActivation)");
+}
+
+Scalar LubricationParameters::resolvedGapRatio(Scalar a1, Scalar a2, Scalar cellSize) const {
+  const bool wall = !std::isfinite(a2);
+  const Scalar cells = wall ? wallResolvedGapCells : pairResolvedGapCells;
+  if (cells == 0) return 0;
+  require(cellSize > 0, std::string(wall ? "wallResolvedGapCells" : "pairResolvedGapCells") +
+                            " needs the bodies' cell size (> 0), given " +
+                            Range::number(cellSize));
+  return cells * cellSize / (wall ? a1 : 0.5 * (a1 + a2));
+}
+
+Scalar LubricationParameters::activationRatio(Scalar a1, Scalar a2, Scalar cellSize) const {
+  const bool wall = !std::isfinite(a2);
+  if (!resolvedGapForm(wall)) return wall ? wallActivation : pairActivation;
+  return std::clamp(kActivationOverResolvedGap * resolvedGapRatio(a1, a2, cellSize), saturation,
+                    kMaxActivation);
+}
+
+Scalar LubricationParameters::activationGap(Scalar a1, Scalar a2, Scalar cellSize) const {
+  const Scalar radius = std::isfinite(a2) ? 0.5 * (a1 + a2) : a1;
+  return activationRatio(a1, a2, cellSize) * radius;
 }
 
 namespace {
@@ -97,7 +125,7 @@ LubricationGapLaw::LubricationGapLaw(Scalar a1, Scalar a2, Scalar viscosity, con
     : LubricationGapLaw(a1, a2, viscosity, p, std::isfinite(a2) ? a1 * a2 / (a1 + a2) : a1) {}
 
 LubricationGapLaw::LubricationGapLaw(Scalar a1, Scalar a2, Scalar viscosity, const LubricationParameters& p,
-                                     Scalar squeezeRadius)
+                                     Scalar squeezeRadius, Scalar cellSize)
     : wall_(!std::isfinite(a2)), force_(6 * kPi * viscosity * a1), sat_(p.saturation) {
   // the leading term of lambda, A/x, is 6 pi mu a1 A/x = 6 pi mu R_s^2/h with
   // R_s the spheres' squeeze radius: scaled by (R*/R_s)^2 it is the paraboloid's
@@ -105,19 +133,44 @@ LubricationGapLaw::LubricationGapLaw(Scalar a1, Scalar a2, Scalar viscosity, con
   const Scalar leading = (squeezeRadius / sphereRadius) * (squeezeRadius / sphereRadius);
   if (wall_) {
     A_ = leading;
+    logB_ = 0.2;
     scale_ = 1 / a1;
-    act_ = p.wallActivation;
   } else {
     const PairTerms t = pairTerms(a1, a2);
     A_ = leading * t.A;
     B_ = t.B;
     C_ = t.C;
+    logB_ = t.B;
     scale_ = 2 / (a1 + a2);
-    act_ = p.pairActivation;
   }
-  lambdaAct_ = lambda(act_);
-  lambdaSat_ = lambda(sat_);
-  primitiveSat_ = lambdaPrimitive(sat_);
+  act_ = p.activationRatio(a1, a2, cellSize);
+  delta_ = p.resolvedGapRatio(a1, a2, cellSize);
+  if (delta_ > 0) {
+    unresolvedAct_ = unresolved(act_);
+  } else {
+    lambdaAct_ = lambda(act_);
+  }
+  correctionSat_ = correction(sat_);
+  primitiveSat_ = correctionPrimitive(sat_);
+}
+
+Scalar LubricationGapLaw::unresolved(Scalar x) const {
+  return A_ * (1 / x - 1 / std::hypot(x, delta_)) +
+         0.5 * logB_ * std::log1p(delta_ * delta_ / (x * x));
+}
+
+Scalar LubricationGapLaw::unresolvedPrimitive(Scalar x) const {
+  return A_ * (std::log(x) - std::asinh(x / delta_)) +
+         0.5 * logB_ * (x * std::log1p(delta_ * delta_ / (x * x)) + 2 * delta_ * std::atan(x / delta_));
+}
+
+Scalar LubricationGapLaw::correction(Scalar x) const {
+  return delta_ > 0 ? unresolved(x) - unresolvedAct_ : lambda(x) - lambdaAct_;
+}
+
+Scalar LubricationGapLaw::correctionPrimitive(Scalar x) const {
+  return delta_ > 0 ? unresolvedPrimitive(x) - unresolvedAct_ * x
+                    : lambdaPrimitive(x) - lambdaAct_ * x;
 }
 
 Scalar LubricationGapLaw::lambda(Scalar x) const {
@@ -134,21 +187,27 @@ Scalar LubricationGapLaw::lambdaPrimitive(Scalar x) const {
 Scalar LubricationGapLaw::coefficient(Scalar gap) const {
   const Scalar x = scale_ * gap;
   if (!(x < act_) || gap < 0) return 0;
-  return force_ * ((x > sat_ ? lambda(x) : lambdaSat_) - lambdaAct_);
+  return force_ * (x > sat_ ? correction(x) : correctionSat_);
 }
 
 Scalar LubricationGapLaw::logFactor(Scalar gap) const {
   const Scalar x = scale_ * gap;
   if (!(x < act_) || gap < 0) return 0;
-  return std::log(act_ / std::max(x, sat_));
+  const Scalar xe = std::max(x, sat_);
+  // ratio form: the flow carries ln(1/x_act); resolved-gap form: ln(1/s)
+  if (delta_ > 0) {
+    return 0.5 * (std::log1p(delta_ * delta_ / (xe * xe)) -
+                  std::log1p(delta_ * delta_ / (act_ * act_)));
+  }
+  return std::log(act_ / xe);
 }
 
 Scalar LubricationGapLaw::primitive(Scalar gap) const {
   Scalar x = scale_ * gap;
   if (!(x > 0)) return 0;
   x = std::min(x, act_);
-  Scalar integral = (lambdaSat_ - lambdaAct_) * std::min(x, sat_);
-  if (x > sat_) integral += lambdaPrimitive(x) - primitiveSat_ - lambdaAct_ * (x - sat_);
+  Scalar integral = correctionSat_ * std::min(x, sat_);
+  if (x > sat_) integral += correctionPrimitive(x) - primitiveSat_;
   return force_ / scale_ * integral;
 }
 

@@ -1,6 +1,7 @@
 #include "collision/StokesLubrication.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -16,12 +17,24 @@ StokesLubrication::StokesLubrication(Scalar viscosity, const LubricationParamete
   parameters_.validate();
 }
 
-Scalar StokesLubrication::activation() const {
-  return wall_ ? parameters_.wallActivation : parameters_.pairActivation;
+Scalar StokesLubrication::activationGap(Scalar r1, Scalar r2, Scalar cellSize) const {
+  return parameters_.activationGap(r1, wall_ ? std::numeric_limits<Scalar>::infinity() : r2, cellSize);
 }
 
-LubricationGapLaw StokesLubrication::gapLaw(Scalar r1, Scalar r2, Scalar squeezeRadius) const {
-  return LubricationGapLaw(r1, r2, viscosity_, parameters_, squeezeRadius);
+Scalar StokesLubrication::reach(Scalar radiusBound, Scalar cellSize) const {
+  // ratio form: 0.5 x_act (r1 + r2) <= reach(r1) + reach(r2); resolved-gap
+  // form: the activation gap is at most kActivationOverResolvedGap resolved
+  // gaps of the larger cell size
+  if (parameters_.resolvedGapForm(false)) {
+    return 0.5 * LubricationParameters::kActivationOverResolvedGap *
+           parameters_.pairResolvedGapCells * cellSize;
+  }
+  return 0.5 * parameters_.pairActivation * radiusBound;
+}
+
+LubricationGapLaw StokesLubrication::gapLaw(Scalar r1, Scalar r2, Scalar squeezeRadius,
+                                            Scalar cellSize) const {
+  return LubricationGapLaw(r1, r2, viscosity_, parameters_, squeezeRadius, cellSize);
 }
 
 }  // namespace collision

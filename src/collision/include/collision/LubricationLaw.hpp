@@ -14,11 +14,23 @@
  * physics-references.md 3), and for a sphere of radius a and a plane
  * (eps = h/a; Cox & Brenner 1967, Costa et al. 2015)
  *     lambda = 1/eps - (1/5) ln eps - (1/21) eps ln eps + 0.9713.
- * The resolved flow carries the force down to gaps of about a cell; below the
- * activation gap (xi_act, eps_act) the unresolved part
- *     F = -6 pi mu a1 [lambda(max(xi, xi_sat)) - lambda(xi_act)] u
- * is added, frozen below the saturation gap xi_sat (surface roughness; the
- * founding paper's eps_1 = 1e-3), so that it stays finite; off in contact.
+ * The resolved flow carries the force down to gaps of about a cell; the
+ * correction adds the part it does not carry, in one of two forms:
+ * - the ratio form (Costa et al. 2015): below the activation gap ratio
+ *   (xi_act, eps_act) the flow is taken to carry lambda(x_act), and
+ *       F = -6 pi mu a1 [lambda(x) - lambda(x_act)] u;
+ * - the resolved-gap form: the flow carries the film force of the gap
+ *   s = sqrt(x^2 + x_delta^2), widened in quadrature by a resolved gap
+ *   delta = c x cell size (x_delta its ratio), so that the correction is the
+ *   difference of the singular terms at x and at s,
+ *       F = -6 pi mu a1 [A (1/x - 1/s) + (B/2) ln(1 + x_delta^2/x^2)
+ *                        - (the same at x_act)] u,
+ *   with A/x and B ln(1/x) the leading and logarithmic terms of lambda, and
+ *   x_act = kActivationOverResolvedGap x_delta. c is fitted once on the
+ *   resolved force of a sphere approaching a wall (LubricationParameters).
+ * x is frozen below the saturation gap x_sat (surface roughness; the
+ * founding paper's eps_1 = 1e-3), so that the force stays finite; off in
+ * contact.
  * For spheroids a1, a2 are the Gaussian curvature radii of the bodies at their
  * closest points (a plane: infinite; Ardekani et al. 2016), and the leading
  * term, the squeeze force of the local gap, is that of the gap's paraboloid
@@ -40,6 +52,24 @@ struct LubricationParameters {
   Scalar pairActivation = 0.025;
   /// eps_act = h/a below which the wall correction acts, in activationRange()
   Scalar wallActivation = 0.075;
+  /// > 0: the resolved-gap form for pairs, with delta = pairResolvedGapCells
+  /// x the bodies' cell size (CollisionBody::cellSize), in place of the ratio
+  /// pairActivation; 0: the ratio form. In kCellsRange.
+  Scalar pairResolvedGapCells = 0;
+  /// > 0: the resolved-gap form for walls (wallResolvedGapCells x cellSize),
+  /// in place of wallActivation; 0: the ratio form. In kCellsRange.
+  Scalar wallResolvedGapCells = 0;
+  static constexpr Range kCellsRange{0, 8, true, false};
+  /// The resolved gap in cells of the module's flow solver (its defaults):
+  /// fitted once on the resolved film force of a sphere approaching a wall at
+  /// 8 cells/d (least squares over eleven gaps, 2 d to 1e-3 d) and checked at
+  /// 12 and 16 (validation/lubricationResolution, docs/collisions.md); pairs:
+  /// the wall's value (stated, not fitted).
+  static constexpr Scalar kWallResolvedGapCells = 0.62;
+  static constexpr Scalar kPairResolvedGapCells = kWallResolvedGapCells;
+  /// The resolved-gap form acts below this many resolved gaps delta: beyond,
+  /// its correction, about delta^2/(2 h^2) of the force, is at most 1/32.
+  static constexpr Scalar kActivationOverResolvedGap = 4;
   /// xi_sat, eps_sat: the correction is frozen below this gap ratio, in kSaturationRange
   Scalar saturation = 1e-3;
   static constexpr Range kSaturationRange{0, 1, true, true};
@@ -53,6 +83,33 @@ struct LubricationParameters {
 
   /// @throws std::invalid_argument naming the parameter and its allowed range
   void validate() const;
+
+  /// Whether the law of a wall (true) or a pair is of the resolved-gap form.
+  bool resolvedGapForm(bool wall) const {
+    return (wall ? wallResolvedGapCells : pairResolvedGapCells) > 0;
+  }
+
+  /**
+   * The resolved gap ratio x_delta of the resolved-gap form (delta/a1 for a
+   * wall, a2 = infinity; 2 delta/(a1 + a2) for a pair), 0 in the ratio form.
+   * @throws std::invalid_argument in the resolved-gap form with cellSize <= 0
+   */
+  Scalar resolvedGapRatio(Scalar a1, Scalar a2, Scalar cellSize) const;
+
+  /**
+   * The activation gap ratio of a law (x_act: h_act/a1 for a wall, a2 =
+   * infinity; 2 h_act/(a1 + a2) for a pair) for the curvature radii a1, a2
+   * and the cell size: the ratio keyword's, or kActivationOverResolvedGap
+   * x_delta, at most kMaxActivation (the asymptotic laws hold below it) and
+   * at least the saturation ratio (there the law no longer acts).
+   * Nondecreasing in a1 and a2, so that the radii's upper bounds bound the
+   * activation gap.
+   * @throws std::invalid_argument in the resolved-gap form with cellSize <= 0
+   */
+  Scalar activationRatio(Scalar a1, Scalar a2, Scalar cellSize) const;
+
+  /// The activation gap h_act itself (a length) for the radii and cell size.
+  Scalar activationGap(Scalar a1, Scalar a2, Scalar cellSize) const;
 };
 
 /// lambda of two spheres of radii a1, a2 at the gap ratio xi = 2 h/(a1 + a2) > 0.
@@ -107,8 +164,10 @@ class LubricationGapLaw {
   LubricationGapLaw(Scalar a1, Scalar a2, Scalar viscosity, const LubricationParameters& p);
   /// The same with the leading term 6 pi mu R*^2 u/h of the gap's paraboloid
   /// (squeezeRadius R* > 0; for spheres R* = a1 a2/(a1 + a2), a plane: a1)
+  /// and the activation gap of the cell size cellSize (activationRatio; 0 with
+  /// the ratio activation)
   LubricationGapLaw(Scalar a1, Scalar a2, Scalar viscosity, const LubricationParameters& p,
-                    Scalar squeezeRadius);
+                    Scalar squeezeRadius, Scalar cellSize = 0);
   Scalar coefficient(Scalar gap) const;
   /// G(gap) = int_0^gap c(h) dh (0 for gap <= 0, constant beyond the activation gap)
   Scalar primitive(Scalar gap) const;
@@ -119,11 +178,21 @@ class LubricationGapLaw {
  private:
   Scalar lambda(Scalar x) const;
   Scalar lambdaPrimitive(Scalar x) const;
+  /// the resolved-gap form's correction (before the shift at x_act) and its primitive
+  Scalar unresolved(Scalar x) const;
+  Scalar unresolvedPrimitive(Scalar x) const;
+  /// the correction's value at x > 0 below the activation gap, before the saturation
+  Scalar correction(Scalar x) const;
+  Scalar correctionPrimitive(Scalar x) const;
   bool wall_ = true;
+  Scalar delta_ = 0;  ///< x_delta > 0: the resolved-gap form
+  Scalar logB_ = 0;   ///< B of lambda's B ln(1/x)
   Scalar A_ = 0, B_ = 0, C_ = 0;  ///< the pair law's terms; walls: A_, the 1/eps term's
   Scalar scale_ = 0;              ///< gap ratio x = scale_ h
   Scalar force_ = 0;              ///< 6 pi mu a1: c = force_ (lambda(x) - lambda(x_act))
-  Scalar act_ = 0, sat_ = 0, lambdaAct_ = 0, lambdaSat_ = 0, primitiveSat_ = 0;
+  Scalar act_ = 0, sat_ = 0, correctionSat_ = 0, primitiveSat_ = 0;
+  Scalar lambdaAct_ = 0;      ///< ratio form: lambda(x_act)
+  Scalar unresolvedAct_ = 0;  ///< resolved-gap form: unresolved(x_act)
 };
 
 }  // namespace collision

@@ -1,6 +1,6 @@
 /**
  * @file NoLubrication.hpp
- * @brief No lubrication correction (activation 0: the bodies are not grown
+ * @brief No lubrication correction (it never acts: the bodies are not grown
  *        for it and no pair is recorded for it).
  *
  * See also: Lubrication, StokesLubrication.
@@ -14,8 +14,12 @@ namespace collision {
 
 class NoLubrication : public Lubrication {
  public:
-  Scalar activation() const override { return 0; }
-  LubricationGapLaw gapLaw(Scalar, Scalar, Scalar) const override { return LubricationGapLaw(); }
+  bool acts() const override { return false; }
+  Scalar activationGap(Scalar, Scalar, Scalar) const override { return 0; }
+  Scalar reach(Scalar, Scalar) const override { return 0; }
+  LubricationGapLaw gapLaw(Scalar, Scalar, Scalar, Scalar) const override {
+    return LubricationGapLaw();
+  }
   bool tangential() const override { return false; }
   Scalar viscosity() const override { return 0; }
 };

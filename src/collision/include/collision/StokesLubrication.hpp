@@ -10,6 +10,8 @@
  * | viscosity      | dynamic viscosity mu [Pa s], from the caller |      | > 0 |
  * | pairActivation | 2h/(R1 + R2) below which a pair law acts  | 0.025   | (saturation, 1] |
  * | wallActivation | h/R below which a wall law acts           | 0.075   | (saturation, 1] |
+ * | pairResolvedGapCells | > 0: the resolved-gap form, delta in cells (cellSize) | 0 (ratio form) | 0 or (0, 8] |
+ * | wallResolvedGapCells | > 0: the same for walls                 | 0 (ratio form) | 0 or (0, 8] |
  * | saturation     | gap ratio below which it is frozen        | 1e-3    | (0, 1) |
  * | tangential     | the logarithmic tangential terms too      | true    | true, false |
  *
@@ -34,8 +36,11 @@ class StokesLubrication : public Lubrication {
   Scalar viscosity() const override { return viscosity_; }
   const LubricationParameters& parameters() const { return parameters_; }
 
-  Scalar activation() const override;
-  LubricationGapLaw gapLaw(Scalar r1, Scalar r2, Scalar squeezeRadius) const override;
+  bool acts() const override { return true; }
+  Scalar activationGap(Scalar r1, Scalar r2, Scalar cellSize) const override;
+  Scalar reach(Scalar radiusBound, Scalar cellSize) const override;
+  LubricationGapLaw gapLaw(Scalar r1, Scalar r2, Scalar squeezeRadius,
+                           Scalar cellSize) const override;
   bool tangential() const override { return parameters_.tangential; }
 
  private:

@@ -88,7 +88,8 @@ void Foam::bodyIntegrator::checkOverlaps
 {
     const coupledBodySet set
     (
-        bodies, fluidDensity_, g_, virtualMass_, collision_->filmGap()
+        bodies, fluidDensity_, g_, virtualMass_, collision_->filmGap(),
+        collision_->cellSize()
     );
     std::vector<collision::BodyState> states;
     for (const immersedBody& body : bodies)
@@ -148,7 +149,11 @@ void Foam::bodyIntegrator::advance
     using immersedSpheroids::toFoam;
 
     const label nBodies = bodies.size();
-    coupledBodySet set(bodies, fluidDensity_, g_, virtualMass_, collision_->filmGap());
+    coupledBodySet set
+    (
+        bodies, fluidDensity_, g_, virtualMass_, collision_->filmGap(),
+        collision_->cellSize()
+    );
     std::vector<collision::BodyState> states(nBodies);
     forAll(bodies, i)
     {

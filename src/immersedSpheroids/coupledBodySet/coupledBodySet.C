@@ -20,14 +20,16 @@ Foam::coupledBodySet::coupledBodySet
     const scalar fluidDensity,
     const vector& g,
     const scalar virtualMass,
-    const scalar filmGap
+    const scalar filmGap,
+    const scalar cellSize
 )
 :
     bodies_(bodies),
     fluidDensity_(fluidDensity),
     g_(g),
     virtualMass_(virtualMass),
-    filmGap_(filmGap)
+    filmGap_(filmGap),
+    cellSize_(cellSize)
 {}
 
 
@@ -72,6 +74,7 @@ collision::CollisionBody Foam::coupledBodySet::collisionBody
     c.movable = body.motion().moves();
     c.stationary = body.motion().frozen();
     c.filmGap = filmGap_;
+    c.cellSize = cellSize_;
     c.externalForce = toCore(externalForce(i));
     c.mass =
         body.motion().isFreeInTranslation()

@@ -51,6 +51,7 @@ Foam::filmCorrection::filmCorrection
     fluidDensity_(fluidDensity),
     active_(false),
     filmGap_(0),
+    cellSize_(smallestCellSize(mesh)),
     viscosity_(0)
 {
     using namespace immersedSpheroids;
@@ -96,7 +97,7 @@ Foam::filmCorrection::filmCorrection
     }
     else
     {
-        filmGap_ = smallestCellSize(mesh);
+        filmGap_ = cellSize_;
     }
 }
 

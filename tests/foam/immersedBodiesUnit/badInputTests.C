@@ -222,6 +222,30 @@ void immersedBodiesTests::testBadInput(const Time& runTime, const fvMesh& mesh)
     (
         construct
         (
+            "collision { type lubricationContact; wallActivation 0.1;"
+            " wallResolvedGapCells 1; } viscosity 1e-3; " + withBody(goodBody)
+        ),
+        {"'wallResolvedGapCells'", "wallActivation", "give one of them", fname},
+        "collision activation given both as a ratio and in cells"
+    );
+    expectFatalIOError
+    (
+        construct
+        (
+            "collision { type lubricationContact;"
+            " pairResolvedGapCells 0; } viscosity 1e-3; " + withBody(goodBody)
+        ),
+        {
+            "'pairResolvedGapCells'",
+            collision::LubricationParameters::kCellsRange.str(),
+            fname
+        },
+        "collision pairResolvedGapCells out of range"
+    );
+    expectFatalIOError
+    (
+        construct
+        (
             "collision { type lubrication; } " + withBody(goodBody)
         ),
         {"lubrication", "contact, lubricationContact, none", fname},

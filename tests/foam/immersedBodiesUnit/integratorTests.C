@@ -100,7 +100,7 @@ void immersedBodiesTests::testIntegrator(const fvMesh& mesh)
     const filmCorrection film(properties, mesh, 0, true);
     autoPtr<collisionModel> coupledModel =
         collisionModel::New(properties, mesh, film);
-    coupledBodySet set(bodies, 0, Zero, 0, 0);
+    coupledBodySet set(bodies, 0, Zero, 0, 0, 0);
     std::vector<collision::BodyState> states;
     for (const immersedBody& b : bodies)
     {

@@ -80,6 +80,27 @@ word readModelName
     return name;
 }
 
+//- A lubrication law takes either the resolved-gap form (its resolved gap
+//  in cells) or the ratio form (its activation gap ratio)
+void checkActivationChoice
+(
+    const dictionary& dict,
+    const word& ratioKeyword,
+    const word& cellsKeyword
+)
+{
+    if (dict.found(ratioKeyword) && dict.found(cellsKeyword))
+    {
+        immersedSpheroids::entryError
+        (
+            dict, cellsKeyword,
+            "is given with " + ratioKeyword + ": give one of them, "
+          + cellsKeyword + " (the resolved-gap form, the default) or "
+          + ratioKeyword + " (the activation gap ratio form)"
+        );
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -103,7 +124,8 @@ Foam::collisionModels::contact::contact
         )
     ),
     model_(),
-    filmGap_(film.filmGap())
+    filmGap_(film.filmGap()),
+    cellSize_(film.cellSize())
 {
     using namespace immersedSpheroids;
 
@@ -136,8 +158,8 @@ Foam::collisionModels::contact::contact
         (
             wordList
             ({
-                "pairActivation", "wallActivation", "saturation",
-                "tangentialLubrication"
+                "pairActivation", "wallActivation", "pairResolvedGapCells",
+                "wallResolvedGapCells", "saturation", "tangentialLubrication"
             })
         );
     }
@@ -217,6 +239,10 @@ Foam::collisionModels::contact::contact
             Lubrication::kSaturationRange,
             "the saturation gap ratio eps_sat"
         );
+        // the resolved-gap form by default; the ratio form when its
+        // activation gap ratio is given
+        checkActivationChoice(dict, "pairActivation", "pairResolvedGapCells");
+        checkActivationChoice(dict, "wallActivation", "wallResolvedGapCells");
         p.lubrication.pairActivation = readOptionalInRange<scalar>
         (
             dict, "pairActivation", lawDefaults.lubrication.pairActivation,
@@ -229,6 +255,24 @@ Foam::collisionModels::contact::contact
             p.lubrication.activationRange(),
             "the wall activation gap ratio h/R, above saturation,"
         );
+        p.lubrication.pairResolvedGapCells =
+            dict.found("pairActivation")
+          ? 0
+          : readOptionalInRange<scalar>
+            (
+                dict, "pairResolvedGapCells",
+                Lubrication::kPairResolvedGapCells, Lubrication::kCellsRange,
+                "the pairs' resolved gap in cells of the smallest cell size"
+            );
+        p.lubrication.wallResolvedGapCells =
+            dict.found("wallActivation")
+          ? 0
+          : readOptionalInRange<scalar>
+            (
+                dict, "wallResolvedGapCells",
+                Lubrication::kWallResolvedGapCells, Lubrication::kCellsRange,
+                "the walls' resolved gap in cells of the smallest cell size"
+            );
         p.lubrication.tangential = immersedSpheroids::readCheckedOrDefault<bool>
         (
             dict, "tangentialLubrication", lawDefaults.lubrication.tangential,
@@ -287,9 +331,30 @@ Foam::collisionModels::contact::contact
         << " (distance method " << s.distanceMethod.c_str() << ")";
     if (lubrication)
     {
+        const auto activation = [&](const scalar cells, const scalar ratio)
+        {
+            const std::string text
+            (
+                cells > 0
+              ? "resolved gap " + Foam::name(cells) + " cells ("
+              + Foam::name(cells*cellSize_) + " m)"
+              : "ratio " + Foam::name(ratio)
+            );
+            return text;
+        };
         Info<< ", lubrication: mu " << p.viscosity << ", activation "
-            << p.lubrication.pairActivation << " (pairs) "
-            << p.lubrication.wallActivation << " (walls), saturation "
+            << activation
+               (
+                   p.lubrication.pairResolvedGapCells,
+                   p.lubrication.pairActivation
+               ).c_str()
+            << " (pairs) "
+            << activation
+               (
+                   p.lubrication.wallResolvedGapCells,
+                   p.lubrication.wallActivation
+               ).c_str()
+            << " (walls), saturation "
             << p.lubrication.saturation << ", tangential terms "
             << (p.lubrication.tangential ? "yes" : "no");
     }
@@ -430,8 +495,8 @@ void Foam::collisionModels::contact::report(const label nSubSteps)
         << ", max overlap " << st.maxOverlapRatio << " a_min";
     if
     (
-        model_->pairModel().lubrication().activation() > 0
-     || model_->wallModel().lubrication().activation() > 0
+        model_->pairModel().lubrication().acts()
+     || model_->wallModel().lubrication().acts()
     )
     {
         Info<< ", lubricated " << st.lubricated/calls;

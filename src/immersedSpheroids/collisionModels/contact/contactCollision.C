@@ -81,15 +81,26 @@ word readModelName
 }
 
 //- A lubrication law takes either the resolved-gap form (its resolved gap
-//  in cells) or the ratio form (its activation gap ratio)
-void checkActivationChoice
+//  in cells, the default) or the ratio form (its activation gap ratio
+//  given): the resolved gap in cells, 0 in the ratio form
+scalar readResolvedGapCells
 (
     const dictionary& dict,
     const word& ratioKeyword,
-    const word& cellsKeyword
+    const word& cellsKeyword,
+    const scalar deflt
 )
 {
-    if (dict.found(ratioKeyword) && dict.found(cellsKeyword))
+    if (!dict.found(ratioKeyword))
+    {
+        return immersedSpheroids::readOptionalInRange<scalar>
+        (
+            dict, cellsKeyword, deflt,
+            collision::LubricationParameters::kCellsRange,
+            "the resolved gap in cells of the smallest cell size"
+        );
+    }
+    if (dict.found(cellsKeyword))
     {
         immersedSpheroids::entryError
         (
@@ -99,6 +110,7 @@ void checkActivationChoice
           + ratioKeyword + " (the activation gap ratio form)"
         );
     }
+    return 0;
 }
 
 } // End anonymous namespace
@@ -239,10 +251,6 @@ Foam::collisionModels::contact::contact
             Lubrication::kSaturationRange,
             "the saturation gap ratio eps_sat"
         );
-        // the resolved-gap form by default; the ratio form when its
-        // activation gap ratio is given
-        checkActivationChoice(dict, "pairActivation", "pairResolvedGapCells");
-        checkActivationChoice(dict, "wallActivation", "wallResolvedGapCells");
         p.lubrication.pairActivation = readOptionalInRange<scalar>
         (
             dict, "pairActivation", lawDefaults.lubrication.pairActivation,
@@ -255,24 +263,16 @@ Foam::collisionModels::contact::contact
             p.lubrication.activationRange(),
             "the wall activation gap ratio h/R, above saturation,"
         );
-        p.lubrication.pairResolvedGapCells =
-            dict.found("pairActivation")
-          ? 0
-          : readOptionalInRange<scalar>
-            (
-                dict, "pairResolvedGapCells",
-                Lubrication::kPairResolvedGapCells, Lubrication::kCellsRange,
-                "the pairs' resolved gap in cells of the smallest cell size"
-            );
-        p.lubrication.wallResolvedGapCells =
-            dict.found("wallActivation")
-          ? 0
-          : readOptionalInRange<scalar>
-            (
-                dict, "wallResolvedGapCells",
-                Lubrication::kWallResolvedGapCells, Lubrication::kCellsRange,
-                "the walls' resolved gap in cells of the smallest cell size"
-            );
+        p.lubrication.pairResolvedGapCells = readResolvedGapCells
+        (
+            dict, "pairActivation", "pairResolvedGapCells",
+            Lubrication::kPairResolvedGapCells
+        );
+        p.lubrication.wallResolvedGapCells = readResolvedGapCells
+        (
+            dict, "wallActivation", "wallResolvedGapCells",
+            Lubrication::kWallResolvedGapCells
+        );
         p.lubrication.tangential = immersedSpheroids::readCheckedOrDefault<bool>
         (
             dict, "tangentialLubrication", lawDefaults.lubrication.tangential,

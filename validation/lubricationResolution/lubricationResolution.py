@@ -15,7 +15,9 @@ the film correction, as they run in production), over 6 pi mu a U, is compared w
                      / (4 sinh^2((n+1/2) alpha) - (2n+1)^2 sinh^2(alpha)) - 1],
     cosh(alpha) = 1 + h/a.
 
-    lubricationResolution.py run [--cpd N] [--gap G ...] [--quick] [--force]
+    lubricationResolution.py run [--cpd N] [--gap G ...] [--quick] [--force] [--rescore]
+    lubricationResolution.py fit --cpd N  the resolved gap c (delta = c h_cell) that best
+                                          completes that resolution's resolved forces
     lubricationResolution.py plot        results/table.md, metrics.json, force.png
 
 Each finished run appends a row to results/runs.csv (gap, forces, steadiness, CPU time, host,
@@ -46,6 +48,8 @@ U = 0.01                # approach speed, Re = U d/nu
 GAPS = (2.0, 1.0, 0.5, 0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001)   # h/d
 LAMBDA = 1.0            # nu dt/h^2 (the forcing is unstable here at 4: README)
 T_STEADY = 8.0          # run length in d^2/nu (steady to about 1e-4 by 5 at 4 cells/d)
+FIT_CPD = 8             # the resolution the resolved gap is fitted at (README)
+RESCORE_STEPS = 2       # steps a finished run is continued by to rescore its correction
 BOX_HALF, BOX_TOP = 6.0, 12.0
 FIELDS = ["name", "cpd", "gap", "cells", "dt", "steps", "F_hydro", "F_collision", "F_total",
           "brenner", "error_pct", "error_pct_hydro_only", "unsteadiness", "cpu_s", "host",
@@ -96,8 +100,8 @@ stopAt          endTime;
 endTime         {end_time:.12g};
 deltaT          {dt:.12g};
 
-writeControl    timeStep;
-writeInterval   100000000;
+writeControl    runTime;
+writeInterval   {end_time:.12g};
 purgeWrite      0;
 writeFormat     binary;
 writePrecision  12;
@@ -209,20 +213,47 @@ def analyse(h5):
             "unsteadiness": change}
 
 
-def run_one(cpd, gap, force, quick):
+def rescore(case, info):
+    """Continue a finished run by RESCORE_STEPS steps with the solver as built now: the frozen
+    body's flow is steady and does not depend on the collision model, so the last step's
+    collision force is the current correction on the run's resolved flow."""
+    end = info["end_time"]
+    if not os.path.isdir(os.path.join(case, f"{end:g}")):
+        sys.exit(f"lubricationResolution: {case} has no time directory {end:g} to continue "
+                 f"(run it again with --force)")
+    new_end = end + RESCORE_STEPS * info["dt"]
+    cd = os.path.join(case, "system", "controlDict")
+    text = open(cd).read()
+    text = text.replace(f"endTime         {end:.12g};", f"endTime         {new_end:.12g};")
+    open(cd, "w").write(text)
+    info["rescored_end_time"] = new_end
+    status = run_logged(["immersedSpheroidFoam"], case, "log.rescore")
+    open(cd, "w").write(text.replace(f"endTime         {new_end:.12g};",
+                                     f"endTime         {end:.12g};"))
+    shutil.rmtree(os.path.join(case, f"{new_end:g}"), ignore_errors=True)
+    if status != 0:
+        sys.exit(f"lubricationResolution: the solver failed in {case} (log.rescore)")
+
+
+def run_one(cpd, gap, force, quick, rescore_only=False):
     name = f"c{cpd}-h{gap:g}" + ("-quick" if quick else "")
     case = os.path.join(RUNS, name)
-    if os.path.isdir(case) and force:
-        shutil.rmtree(case)
-    if not os.path.isdir(case):
-        os.makedirs(case)
-        info = write_case(case, cpd, gap, 1.0 if quick else T_STEADY)
-        with open(os.path.join(case, "info.json"), "w") as f:
-            json.dump(info, f)
-    if run_logged(["blockMesh"], case, "log.blockMesh") != 0:
-        sys.exit(f"lubricationResolution: blockMesh failed in {case}")
-    if run_logged(["immersedSpheroidFoam"], case, "log.solver") != 0:
-        sys.exit(f"lubricationResolution: the solver failed in {case} (log.solver)")
+    if rescore_only:
+        if not os.path.isdir(case):
+            sys.exit(f"lubricationResolution: no run {case} to rescore")
+        rescore(case, json.load(open(os.path.join(case, "info.json"))))
+    else:
+        if os.path.isdir(case) and force:
+            shutil.rmtree(case)
+        if not os.path.isdir(case):
+            os.makedirs(case)
+            info = write_case(case, cpd, gap, 1.0 if quick else T_STEADY)
+            with open(os.path.join(case, "info.json"), "w") as f:
+                json.dump(info, f)
+        if run_logged(["blockMesh"], case, "log.blockMesh") != 0:
+            sys.exit(f"lubricationResolution: blockMesh failed in {case}")
+        if run_logged(["immersedSpheroidFoam"], case, "log.solver") != 0:
+            sys.exit(f"lubricationResolution: the solver failed in {case} (log.solver)")
     x = analyse(os.path.join(case, "postProcessing", "immersedBodies", "bodies.h5"))
     ref = brenner(gap / A)
     err = 100 * (x["total"] / ref - 1)
@@ -242,6 +273,61 @@ def run_one(cpd, gap, force, quick):
     os.makedirs(RESULTS, exist_ok=True)
     rows = [r for r in read_csv(RUNS_CSV) if r["name"] != name] + [row]
     write_csv(RUNS_CSV, rows, FIELDS, ignore_extra=True)
+
+
+def wall_lambda(eps):
+    """Cox & Brenner's lambda of a sphere and a plane (collision::wallLubricationLambda)."""
+    return 1 / eps - math.log(eps) / 5 - eps * math.log(eps) / 21 + 0.9713
+
+
+def resolved_gap_correction(gap, c, cpd, saturation=1e-3, activation_over_delta=4.0):
+    """The wall correction of the resolved-gap form over 6 pi mu a U (the law of
+    collision::LubricationGapLaw for a sphere and a wall, A = 1, B = 1/5): the singular terms at
+    the gap less those at the widened gap sqrt(x^2 + x_d^2), x_d = c h_cell/a, shifted to zero at
+    the activation gap 4 x_d. Used to fit c; the recorded results are the module's own."""
+    xd = c / cpd / A
+    act = min(activation_over_delta * xd, 1.0)
+    x = gap / A
+    if x >= act:
+        return 0.0
+    u = lambda y: 1 / y - 1 / math.hypot(y, xd) + 0.1 * math.log1p(xd * xd / (y * y))  # noqa: E731
+    return u(max(x, saturation)) - u(act)
+
+
+def do_fit(cpd):
+    """The resolved gap c (in cells, to 0.01) whose correction brings the resolved forces of
+    the runs at cpd closest to Brenner's (least squares of the relative errors over the gaps);
+    results/fit.md with the errors at c and at 0.5 and 2 times it."""
+    rows = sorted((float(r["gap"]), float(r["F_hydro"])) for r in read_csv(RUNS_CSV, missing_ok=False)
+                  if int(r["cpd"]) == cpd)
+    if len(rows) < 3:
+        sys.exit(f"lubricationResolution fit: {len(rows)} runs at {cpd} cells/d in {RUNS_CSV} "
+                 f"(at least 3 gaps needed)")
+
+    def errors(c):
+        return [100 * ((fh + resolved_gap_correction(g, c, cpd)) / brenner(g / A) - 1)
+                for g, fh in rows]
+
+    grid = [i / 100 for i in range(10, 301)]
+    best = min(grid, key=lambda c: sum(e * e for e in errors(c)))
+    lines = [f"Resolved gap fitted on the resolved forces at {cpd} cells/d "
+             f"(`lubricationResolution.py fit --cpd {cpd}`): c = {best:.2f} "
+             "(least squares of the relative errors over the gaps, c on a grid of 0.01).", "",
+             "| h/d | Brenner | resolved | " + " | ".join(f"c = {c:.2f}" for c in
+                                                          (best / 2, best, 2 * best)) + " |",
+             "|---|---|---|---|---|---|"]
+    table = {c: errors(c) for c in (best / 2, best, 2 * best)}
+    for k, (g, fh) in enumerate(reversed(rows)):
+        i = len(rows) - 1 - k
+        lines.append(f"| {g:g} | {brenner(g / A):.4g} | {100 * (fh / brenner(g / A) - 1):+.1f} % | "
+                     + " | ".join(f"{table[c][i]:+.1f} %" for c in table) + " |")
+    lines.append("| largest \|error\| | | | " + " | ".join(
+        f"{max(abs(e) for e in table[c]):.1f} %" for c in table) + " |")
+    os.makedirs(RESULTS, exist_ok=True)
+    with open(os.path.join(RESULTS, "fit.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+    return best, {c: max(abs(e) for e in table[c]) for c in table}
 
 
 def do_plot():
@@ -284,6 +370,11 @@ def do_plot():
     with open(os.path.join(RESULTS, "table.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     metrics = {"max_abs_force_error_pct": round(max(abs(float(r["error_pct"])) for r in rows), 3)}
+    if FIT_CPD in cpds:
+        best, worst = do_fit(FIT_CPD)
+        metrics["fitted_resolved_gap_cells"] = best
+        metrics[f"max_abs_force_error_pct_{FIT_CPD}_half_c"] = round(worst[best / 2], 3)
+        metrics[f"max_abs_force_error_pct_{FIT_CPD}_double_c"] = round(worst[2 * best], 3)
     for c in cpds:
         metrics[f"max_abs_force_error_pct_{c}"] = round(
             max(abs(float(r["error_pct"])) for r in rows if int(r["cpd"]) == c), 3)
@@ -303,11 +394,17 @@ def main():
                    help="h/d (repeatable; default: all of GAPS)")
     r.add_argument("--quick", action="store_true", help="one gap, 1 d^2/nu, not recorded")
     r.add_argument("--force", action="store_true")
+    r.add_argument("--rescore", action="store_true",
+                   help="continue finished runs by a few steps with the solver as built now")
+    fp = sp.add_parser("fit")
+    fp.add_argument("--cpd", type=int, default=8, choices=[4, 8, 12, 16])
     sp.add_parser("plot")
     a = ap.parse_args()
     if a.cmd == "run":
         for gap in a.gap or ([0.5] if a.quick else GAPS):
-            run_one(a.cpd, gap, a.force, a.quick)
+            run_one(a.cpd, gap, a.force, a.quick, a.rescore)
+    elif a.cmd == "fit":
+        do_fit(a.cpd)
     else:
         do_plot()
 

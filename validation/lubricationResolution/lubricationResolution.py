@@ -200,7 +200,8 @@ boundaryField
 
 def analyse(h5):
     """The last step's hydrodynamic and collision force along z over 6 pi mu a U, and the
-    force's relative change over the last quarter of the run (its unsteadiness)."""
+    hydrodynamic force's change over the last quarter of the run relative to the total (the
+    flow's unsteadiness; the correction of a frozen body is constant, but for the build)."""
     import h5py
     with h5py.File(h5, "r", locking=False) as f:
         fh = f["hydroForce"][:, 0, 2]
@@ -208,7 +209,7 @@ def analyse(h5):
     scale = 6 * math.pi * A * U
     total = (fh + fc) / scale
     quarter = max(1, len(total) // 4)
-    change = abs(total[-1] - total[-quarter]) / abs(total[-1])
+    change = abs(fh[-1] - fh[-quarter]) / scale / abs(total[-1])
     return {"hydro": fh[-1] / scale, "collision": fc[-1] / scale, "total": total[-1],
             "unsteadiness": change}
 

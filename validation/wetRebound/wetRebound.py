@@ -19,7 +19,7 @@ Set-up: a box 4d x 4d x 5d (side walls no-slip, bottom the collision wall), the
 sphere released at gap 2d with the velocity of the case (U = 9 St mu/(rho_p d))
 and gravity; it slows as its boundary layer and wake form, so St is measured:
 U_in is the approach speed just before the first collision force (the lubrication
-onset at h = 0.075 a), U_out the largest rebound speed once the sphere has left
+onset, 4 resolved gaps of 0.62 cells from the wall at the defaults), U_out the largest rebound speed once the sphere has left
 the wall (gap >= 0 after the contact), e = U_out/U_in, St = rho_p U_in d/(9 mu);
 e_spring (the largest speed at any time after the touch, at the end of the
 stretched spring phase, before the film resists the separation) is reported too,
@@ -28,7 +28,8 @@ over the steps with a collision force, over m U_in (J_coll, J_hydro, J_gravity),
 J_hydro while the sphere already moves up (J_hydro_out) and the strongest downward
 hydrodynamic force then over the largest collision force (suction). Fixed step dt = 0.4 h/U.
 Collision: lubricationContact (e_dry 0.97, T_c = 10 dt, 10 sub-steps per contact,
-activation 0.075 a, saturation 1e-3 a), penaltyRatio 1e-3, virtualMass 0.5.
+the resolved-gap lubrication at its defaults, saturation 1e-3 a), penaltyRatio 1e-3,
+virtualMass 0.5.
 """
 import argparse
 import json

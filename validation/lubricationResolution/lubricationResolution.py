@@ -218,20 +218,30 @@ def rescore(case, info):
     """Continue a finished run by RESCORE_STEPS steps with the solver as built now: the frozen
     body's flow is steady and does not depend on the collision model, so the last step's
     collision force is the current correction on the run's resolved flow."""
-    end = info["end_time"]
-    if not os.path.isdir(os.path.join(case, f"{end:g}")):
-        sys.exit(f"lubricationResolution: {case} has no time directory {end:g} to continue "
-                 f"(run it again with --force)")
-    new_end = end + RESCORE_STEPS * info["dt"]
+    def times():
+        out = {}
+        for d in os.listdir(case):
+            try:
+                out[float(d)] = d
+            except ValueError:
+                pass
+        return out
+    end, dt = info["end_time"], info["dt"]
+    last = max(times())
+    if abs(last - end) > 0.5 * dt:
+        sys.exit(f"lubricationResolution: {case} has no time directory at its end time {end:g} to "
+                 f"continue (the latest is {last:g}; run it again with --force)")
+    new_end = last + RESCORE_STEPS * dt
     cd = os.path.join(case, "system", "controlDict")
     text = open(cd).read()
     text = text.replace(f"endTime         {end:.12g};", f"endTime         {new_end:.12g};")
     open(cd, "w").write(text)
-    info["rescored_end_time"] = new_end
     status = run_logged(["immersedSpheroidFoam"], case, "log.rescore")
     open(cd, "w").write(text.replace(f"endTime         {new_end:.12g};",
                                      f"endTime         {end:.12g};"))
-    shutil.rmtree(os.path.join(case, f"{new_end:g}"), ignore_errors=True)
+    for t, d in times().items():
+        if t > last:
+            shutil.rmtree(os.path.join(case, d))
     if status != 0:
         sys.exit(f"lubricationResolution: the solver failed in {case} (log.rescore)")
 

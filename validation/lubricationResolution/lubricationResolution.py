@@ -361,12 +361,15 @@ def do_plot():
     fig, axs = plt.subplots(1, 2, figsize=(11, 4))
     gg = np.logspace(-3, math.log10(2), 200)
     axs[0].loglog(gg, [brenner(x / A) for x in gg], "k-", label="Brenner (1961), exact")
-    for c in cpds:
+    for k, c in enumerate(cpds):
         sel = sorted((float(r["gap"]), r) for r in rows if int(r["cpd"]) == c)
         h = [g for g, _ in sel]
-        axs[0].loglog(h, [float(r["F_total"]) for _, r in sel], "o-", label=f"{c} cells/d: resolved + correction")
-        axs[0].loglog(h, [float(r["F_hydro"]) for _, r in sel], "x:", label=f"{c} cells/d: resolved alone")
-        axs[1].semilogx(h, [float(r["error_pct"]) for _, r in sel], "o-", label=f"{c} cells/d")
+        name = f"{c} cells/d" + (" (c fitted)" if c == FIT_CPD else "")
+        axs[0].loglog(h, [float(r["F_total"]) for _, r in sel], "o-", color=f"C{k}",
+                      label=f"{name}: resolved + correction")
+        axs[0].loglog(h, [float(r["F_hydro"]) for _, r in sel], "x:", color=f"C{k}",
+                      label=f"{name}: resolved alone")
+        axs[1].semilogx(h, [float(r["error_pct"]) for _, r in sel], "o-", color=f"C{k}", label=name)
     axs[0].set_xlabel("gap h / d")
     axs[0].set_ylabel("F / (6 pi mu a U)")
     axs[1].set_xlabel("gap h / d")

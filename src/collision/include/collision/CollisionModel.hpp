@@ -98,9 +98,9 @@ struct CollisionBody {
   /// the thickness below which the flow solver cannot resolve a film at this
   /// body (its cell size; FilmCorrection); 0: no film correction
   Scalar filmGap = 0;
-  /// the flow's cell size at this body, for activation gaps in cells
+  /// the flow's cell size at this body, for the resolved-gap lubrication
   /// (LubricationParameters::activationRatio; a pair's is the larger of its
-  /// bodies'); 0: unknown (an activation gap in cells is then an error)
+  /// bodies'); 0: unknown (the resolved-gap form is then an error)
   Scalar cellSize = 0;
   /// every force on the body but the collision forces (weight less buoyancy,
   /// the flow): the sustained load it brings to its contacts

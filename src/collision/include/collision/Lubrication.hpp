@@ -42,7 +42,7 @@ class Lubrication {
   /// The law of one pair against its gap; r1, r2 the Gaussian curvature radii
   /// (r2 = infinity: a wall), squeezeRadius R* of the gap's paraboloid
   /// (GapParaboloid.hpp; spheres: r1 r2/(r1 + r2), a sphere and a wall: r1),
-  /// cellSize the pair's cell size (for an activation gap in cells).
+  /// cellSize the pair's cell size (for the resolved-gap form).
   virtual LubricationGapLaw gapLaw(Scalar r1, Scalar r2, Scalar squeezeRadius,
                                    Scalar cellSize) const = 0;
 

@@ -15,15 +15,22 @@ the film correction, as they run in production), over 6 pi mu a U, is compared w
                      / (4 sinh^2((n+1/2) alpha) - (2n+1)^2 sinh^2(alpha)) - 1],
     cosh(alpha) = 1 + h/a.
 
-    lubricationResolution.py run [--cpd N] [--gap G ...] [--quick] [--force] [--rescore]
+With `--motion sliding` the sphere moves parallel to the wall instead (U along x, no
+rotation) and its drag and rolling torque are compared with the sphere-wall Stokes solution of
+sphereWallStokes.py (reference/sphereWall.csv): the check of the tangential lubrication terms,
+with the resolved gap fitted on the approach; rows in results/slidingRuns.csv.
+
+    lubricationResolution.py run [--cpd N] [--gap G ...] [--motion approach|sliding] [--quick]
+                                 [--force] [--rescore]
     lubricationResolution.py fit --cpd N  the resolved gap c (delta = c h_cell) that best
                                           completes that resolution's resolved forces
-    lubricationResolution.py plot        results/table.md, metrics.json, force.png
+    lubricationResolution.py plot        results/table.md, metrics.json, force.png, sliding.png
 
 Each finished run appends a row to results/runs.csv (gap, forces, steadiness, CPU time, host,
 commit).
 """
 import argparse
+import fcntl
 import json
 import math
 import os
@@ -49,11 +56,20 @@ GAPS = (2.0, 1.0, 0.5, 0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001)   # h/d
 LAMBDA = 1.0            # nu dt/h^2 (the forcing is unstable here at 4: README)
 T_STEADY = 8.0          # run length in d^2/nu (steady to about 1e-4 by 5 at 4 cells/d)
 FIT_CPD = 8             # the resolution the resolved gap is fitted at (README)
+ACTIVATION_OVER_DELTA = 4.0   # collision::LubricationParameters::kActivationOverResolvedGap
 RESCORE_STEPS = 2       # steps a finished run is continued by to rescore its correction
 BOX_HALF, BOX_TOP = 6.0, 12.0
 FIELDS = ["name", "cpd", "gap", "cells", "dt", "steps", "F_hydro", "F_collision", "F_total",
           "brenner", "error_pct", "error_pct_hydro_only", "unsteadiness", "cpu_s", "host",
           "date", "commit"]
+SLIDING_CSV = os.path.join(RESULTS, "slidingRuns.csv")
+SLIDING_FIELDS = ["name", "cpd", "gap", "cells", "dt", "steps", "F_hydro", "F_collision",
+                  "F_total", "reference", "error_pct", "error_pct_hydro_only", "T_hydro",
+                  "T_collision", "T_total", "torque_reference", "unsteadiness", "cpu_s", "host",
+                  "date", "commit"]
+# the imposed velocity of each motion and the axis its force is read along; the sliding
+# sphere's torque about y (the rolling axis) is read beside its drag
+MOTIONS = {"approach": ((0.0, 0.0, -U), 2), "sliding": ((U, 0.0, 0.0), 0)}
 
 
 def brenner(gap):
@@ -78,7 +94,7 @@ def brenner(gap):
     return 4.0 / 3.0 * math.sinh(alpha) * s
 
 
-def write_case(case, cpd, gap, end_time):
+def write_case(case, cpd, gap, end_time, motion="approach"):
     h = 1.0 / cpd
     top_fine = math.ceil((gap + 1.0 + 0.25) / h) * h
     fine = math.ceil((A + 0.25) / h) * h
@@ -159,7 +175,7 @@ bodies
         {{
             type            prescribed;
             frozen          yes;
-            velocity        constant (0 0 {-U:.12g});
+            velocity        constant ({" ".join(f"{v:.12g}" for v in MOTIONS[motion][0])});
             angularVelocity constant (0 0 0);
         }}
     }}
@@ -195,23 +211,35 @@ boundaryField
     ".*"            { type zeroGradient; }
 }
 """)
-    return {"dt": dt, "end_time": end_time}
+    return {"dt": dt, "end_time": end_time, "motion": motion}
 
 
-def analyse(h5):
-    """The last step's hydrodynamic and collision force along z over 6 pi mu a U, and the
-    hydrodynamic force's change over the last quarter of the run relative to the total (the
-    flow's unsteadiness; the correction of a frozen body is constant, but for the build)."""
+def analyse(h5, motion="approach"):
+    """The last step's hydrodynamic and collision force along the motion over 6 pi mu a U
+    (positive against the motion), and the hydrodynamic force's change over the last quarter of
+    the run relative to the total (the flow's unsteadiness; the correction of a frozen body is
+    constant, but for the build). For the sliding sphere also the torque about y over
+    8 pi mu a^2 U (positive in the sense of rolling along the motion)."""
     import h5py
+    velocity, axis = MOTIONS[motion]
+    sign = -1.0 if velocity[axis] > 0 else 1.0
     with h5py.File(h5, "r", locking=False) as f:
-        fh = f["hydroForce"][:, 0, 2]
-        fc = f["collisionForce"][:, 0, 2]
+        fh = sign * f["hydroForce"][:, 0, axis]
+        fc = sign * f["collisionForce"][:, 0, axis]
+        if motion == "sliding":
+            th = f["hydroTorque"][:, 0, 1]
+            tc = f["collisionTorque"][:, 0, 1]
     scale = 6 * math.pi * A * U
     total = (fh + fc) / scale
     quarter = max(1, len(total) // 4)
     change = abs(fh[-1] - fh[-quarter]) / scale / abs(total[-1])
-    return {"hydro": fh[-1] / scale, "collision": fc[-1] / scale, "total": total[-1],
-            "unsteadiness": change}
+    out = {"hydro": fh[-1] / scale, "collision": fc[-1] / scale, "total": total[-1],
+           "unsteadiness": change}
+    if motion == "sliding":
+        tscale = 8 * math.pi * A * A * U
+        out.update(torque_hydro=th[-1] / tscale, torque_collision=tc[-1] / tscale,
+                   torque_total=(th[-1] + tc[-1]) / tscale)
+    return out
 
 
 def rescore(case, info):
@@ -246,8 +274,8 @@ def rescore(case, info):
         sys.exit(f"lubricationResolution: the solver failed in {case} (log.rescore)")
 
 
-def run_one(cpd, gap, force, quick, rescore_only=False):
-    name = f"c{cpd}-h{gap:g}" + ("-quick" if quick else "")
+def run_one(cpd, gap, force, quick, rescore_only=False, motion="approach"):
+    name = f"c{cpd}-h{gap:g}" + ("-sliding" if motion == "sliding" else "") + ("-quick" if quick else "")
     case = os.path.join(RUNS, name)
     if rescore_only:
         if not os.path.isdir(case):
@@ -258,32 +286,62 @@ def run_one(cpd, gap, force, quick, rescore_only=False):
             shutil.rmtree(case)
         if not os.path.isdir(case):
             os.makedirs(case)
-            info = write_case(case, cpd, gap, 1.0 if quick else T_STEADY)
+            info = write_case(case, cpd, gap, 1.0 if quick else T_STEADY, motion)
             with open(os.path.join(case, "info.json"), "w") as f:
                 json.dump(info, f)
         if run_logged(["blockMesh"], case, "log.blockMesh") != 0:
             sys.exit(f"lubricationResolution: blockMesh failed in {case}")
         if run_logged(["immersedSpheroidFoam"], case, "log.solver") != 0:
             sys.exit(f"lubricationResolution: the solver failed in {case} (log.solver)")
-    x = analyse(os.path.join(case, "postProcessing", "immersedBodies", "bodies.h5"))
-    ref = brenner(gap / A)
+    x = analyse(os.path.join(case, "postProcessing", "immersedBodies", "bodies.h5"), motion)
+    if motion == "sliding":
+        ref_row = sphere_wall_reference(gap)
+        ref, what = ref_row["f_par"], "the sliding sphere's drag"
+    else:
+        ref, what = brenner(gap / A), "Brenner"
     err = 100 * (x["total"] / ref - 1)
     err_h = 100 * (x["hydro"] / ref - 1)
     print(f"{name}: F/(6 pi mu a U) {x['total']:.5g} (resolved {x['hydro']:.5g}, correction "
-          f"{x['collision']:.5g}) against Brenner {ref:.5g}: {err:+.2f} % (resolved alone "
+          f"{x['collision']:.5g}) against {what} {ref:.5g}: {err:+.2f} % (resolved alone "
           f"{err_h:+.2f} %), change over the last quarter {x['unsteadiness']:.1e}", flush=True)
     if quick:
+        with open(os.path.join(case, "result.json"), "w") as f:
+            json.dump({"motion": motion, "cpd": cpd, "gap": gap, "reference": ref,
+                       "error_pct": err, "error_pct_hydro_only": err_h, **x}, f, indent=1)
         return
     info = json.load(open(os.path.join(case, "info.json")))
     row = {"name": name, "cpd": cpd, "gap": gap, "cells": mesh_cells(case), "dt": info["dt"],
            "steps": int(round(T_STEADY / info["dt"])),
            "F_hydro": f"{x['hydro']:.6g}", "F_collision": f"{x['collision']:.6g}",
-           "F_total": f"{x['total']:.6g}", "brenner": f"{ref:.6g}", "error_pct": f"{err:.3f}",
+           "F_total": f"{x['total']:.6g}", "error_pct": f"{err:.3f}",
            "error_pct_hydro_only": f"{err_h:.3f}", "unsteadiness": f"{x['unsteadiness']:.2e}",
            "cpu_s": f"{cpu_seconds(case, 'log.solver'):.0f}", **provenance()}
     os.makedirs(RESULTS, exist_ok=True)
-    rows = [r for r in read_csv(RUNS_CSV) if r["name"] != name] + [row]
-    write_csv(RUNS_CSV, rows, FIELDS, ignore_extra=True)
+    if motion == "sliding":
+        row.update(reference=f"{ref:.6g}", T_hydro=f"{x['torque_hydro']:.6g}",
+                   T_collision=f"{x['torque_collision']:.6g}",
+                   T_total=f"{x['torque_total']:.6g}",
+                   torque_reference=f"{ref_row['g_par']:.6g}")
+        csv, fields = SLIDING_CSV, SLIDING_FIELDS
+    else:
+        row["brenner"] = f"{ref:.6g}"
+        csv, fields = RUNS_CSV, FIELDS
+    # two runs at a time share the CSV: read, replace and write it under a lock
+    with open(csv + ".lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        rows = [r for r in read_csv(csv) if r["name"] != name] + [row]
+        write_csv(csv, rows, fields, ignore_extra=True)
+
+
+def sphere_wall_reference(gap):
+    """The sliding sphere's drag f_par (over 6 pi mu a U) and torque g_par (over
+    8 pi mu a^2 U) at h/d = gap, from reference/sphereWall.csv (sphereWallStokes.py)."""
+    path = os.path.join(HERE, "reference", "sphereWall.csv")
+    for r in read_csv(path, missing_ok=False):
+        if abs(float(r["gap_over_d"]) / gap - 1) < 1e-9:
+            return {"f_par": float(r["f_par"]), "g_par": float(r["g_par"])}
+    sys.exit(f"lubricationResolution: no row for h/d = {gap:g} in {path} "
+             f"(sphereWallStokes.py table writes the gaps of GAPS)")
 
 
 def wall_lambda(eps):
@@ -291,13 +349,13 @@ def wall_lambda(eps):
     return 1 / eps - math.log(eps) / 5 - eps * math.log(eps) / 21 + 0.9713
 
 
-def resolved_gap_correction(gap, c, cpd, saturation=1e-3, activation_over_delta=4.0):
+def resolved_gap_correction(gap, c, cpd, saturation=1e-3, activation_over_delta=None):
     """The wall correction of the resolved-gap form over 6 pi mu a U (the law of
     collision::LubricationGapLaw for a sphere and a wall, A = 1, B = 1/5): the singular terms at
     the gap less those at the widened gap sqrt(x^2 + x_d^2), x_d = c h_cell/a, shifted to zero at
     the activation gap 4 x_d. Used to fit c; the recorded results are the module's own."""
     xd = c / cpd / A
-    act = min(activation_over_delta * xd, 1.0)
+    act = min((activation_over_delta or ACTIVATION_OVER_DELTA) * xd, 1.0)
     x = gap / A
     if x >= act:
         return 0.0
@@ -334,11 +392,27 @@ def do_fit(cpd):
                      + " | ".join(f"{table[c][i]:+.1f} %" for c in table) + " |")
     lines.append("| largest \|error\| | | | " + " | ".join(
         f"{max(abs(e) for e in table[c]):.1f} %" for c in table) + " |")
+    # the activation gap, ACTIVATION_OVER_DELTA resolved gaps, is chosen, not fitted: the
+    # errors at c with half and twice that multiple (c not refitted)
+    act = {k: [100 * ((fh + resolved_gap_correction(g, best, cpd, activation_over_delta=k))
+                      / brenner(g / A) - 1) for g, fh in rows]
+           for k in (ACTIVATION_OVER_DELTA / 2, 2 * ACTIVATION_OVER_DELTA)}
+    lines += ["", f"The activation gap ({ACTIVATION_OVER_DELTA:g} resolved gaps, "
+              "`LubricationParameters::kActivationOverResolvedGap`) at half and twice its value, "
+              f"c = {best:.2f}:", "",
+              "| h/d | " + " | ".join(f"activation {k:g} delta" for k in act) + " |", "|---|---|---|"]
+    for k, (g, fh) in enumerate(reversed(rows)):
+        i = len(rows) - 1 - k
+        lines.append(f"| {g:g} | " + " | ".join(f"{act[m][i]:+.1f} %" for m in act) + " |")
+    lines.append("| largest \|error\| | " + " | ".join(
+        f"{max(abs(e) for e in act[m]):.1f} %" for m in act) + " |")
     os.makedirs(RESULTS, exist_ok=True)
     with open(os.path.join(RESULTS, "fit.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
-    return best, {c: max(abs(e) for e in table[c]) for c in table}
+    worst = {c: max(abs(e) for e in table[c]) for c in table}
+    worst.update({("activation", m): max(abs(e) for e in act[m]) for m in act})
+    return best, worst
 
 
 def do_plot():
@@ -381,22 +455,87 @@ def do_plot():
     fig.suptitle("Sphere approaching a wall (Stokes): resolved force plus lubrication correction")
     fig.tight_layout()
     fig.savefig(os.path.join(RESULTS, "force.png"), dpi=120)
-    with open(os.path.join(RESULTS, "table.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
     metrics = {"max_abs_force_error_pct": round(max(abs(float(r["error_pct"])) for r in rows), 3)}
     if FIT_CPD in cpds:
         best, worst = do_fit(FIT_CPD)
         metrics["fitted_resolved_gap_cells"] = best
         metrics[f"max_abs_force_error_pct_{FIT_CPD}_half_c"] = round(worst[best / 2], 3)
         metrics[f"max_abs_force_error_pct_{FIT_CPD}_double_c"] = round(worst[2 * best], 3)
+        metrics[f"max_abs_force_error_pct_{FIT_CPD}_half_activation"] = round(
+            worst[("activation", ACTIVATION_OVER_DELTA / 2)], 3)
+        metrics[f"max_abs_force_error_pct_{FIT_CPD}_double_activation"] = round(
+            worst[("activation", 2 * ACTIVATION_OVER_DELTA)], 3)
     for c in cpds:
         metrics[f"max_abs_force_error_pct_{c}"] = round(
             max(abs(float(r["error_pct"])) for r in rows if int(r["cpd"]) == c), 3)
         metrics[f"gaps_{c}"] = sum(1 for r in rows if int(r["cpd"]) == c)
+    sliding = read_csv(SLIDING_CSV)
+    if sliding:
+        lines += ["", sliding_table_and_figure(sliding)]
+        metrics["max_abs_sliding_force_error_pct"] = round(
+            max(abs(float(r["error_pct"])) for r in sliding), 3)
+        for c in sorted({int(r["cpd"]) for r in sliding}):
+            sel = [r for r in sliding if int(r["cpd"]) == c]
+            metrics[f"max_abs_sliding_force_error_pct_{c}"] = round(
+                max(abs(float(r["error_pct"])) for r in sel), 3)
+            metrics[f"sliding_gaps_{c}"] = len(sel)
+    with open(os.path.join(RESULTS, "table.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
     with open(os.path.join(RESULTS, "metrics.json"), "w") as f:
         json.dump(metrics, f, indent=1, sort_keys=True)
         f.write("\n")
     print("\n".join(lines))
+
+
+def sliding_table_and_figure(rows):
+    """The sliding sphere's table (markdown, returned) and results/sliding.png: drag and torque,
+    resolved plus correction against the reference of sphereWallStokes.py."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    cpds = sorted({int(r["cpd"]) for r in rows})
+    gaps = sorted({float(r["gap"]) for r in rows}, reverse=True)
+    by = {(int(r["cpd"]), float(r["gap"])): r for r in rows}
+    lines = ["Sphere sliding parallel to the wall (no rotation): drag F_x/(6 pi mu a U), resolved + "
+             "correction against the reference (resolved alone in brackets); torque about the "
+             "rolling axis T_y/(8 pi mu a^2 U) total against the reference.", "",
+             "| h/d | drag reference | " + " | ".join(f"{c} cells/d: drag (resolved)" for c in cpds)
+             + " | torque reference | " + " | ".join(f"{c} cells/d: torque" for c in cpds) + " |",
+             "|---|---|" + "---|" * len(cpds) + "---|" + "---|" * len(cpds)]
+    for g in gaps:
+        any_row = next(by[(c, g)] for c in cpds if (c, g) in by)
+        drag, torque = [], []
+        for c in cpds:
+            r = by.get((c, g))
+            drag.append("-" if r is None else f"{float(r['error_pct']):+.1f} % "
+                        f"({float(r['error_pct_hydro_only']):+.1f} %)")
+            torque.append("-" if r is None else f"{float(r['T_total']):.4g}")
+        lines.append(f"| {g:g} | {float(any_row['reference']):.4g} | " + " | ".join(drag)
+                     + f" | {float(any_row['torque_reference']):.4g} | " + " | ".join(torque) + " |")
+    fig, axs = plt.subplots(1, 2, figsize=(11, 4))
+    ref = sorted((float(r["gap"]), float(r["reference"])) for r in rows)
+    axs[0].semilogx([g for g, _ in ref], [f for _, f in ref], "k-", label="reference (sphereWallStokes.py)")
+    for k, c in enumerate(cpds):
+        sel = sorted((float(r["gap"]), r) for r in rows if int(r["cpd"]) == c)
+        h = [g for g, _ in sel]
+        axs[0].semilogx(h, [float(r["F_total"]) for _, r in sel], "o-", color=f"C{k}",
+                        label=f"{c} cells/d: resolved + correction")
+        axs[0].semilogx(h, [float(r["F_hydro"]) for _, r in sel], "x:", color=f"C{k}",
+                        label=f"{c} cells/d: resolved alone")
+        axs[1].semilogx(h, [float(r["error_pct"]) for _, r in sel], "o-", color=f"C{k}",
+                        label=f"{c} cells/d")
+    axs[0].set_xlabel("gap h / d")
+    axs[0].set_ylabel("drag F_x / (6 pi mu a U)")
+    axs[1].set_xlabel("gap h / d")
+    axs[1].set_ylabel("resolved + correction against the reference [%]")
+    axs[1].axhspan(-10, 10, color="0.9")
+    for ax in axs:
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.suptitle("Sphere sliding parallel to a wall (Stokes): resolved drag plus lubrication correction")
+    fig.tight_layout()
+    fig.savefig(os.path.join(RESULTS, "sliding.png"), dpi=120)
+    return "\n".join(lines)
 
 
 def main():
@@ -410,13 +549,15 @@ def main():
     r.add_argument("--force", action="store_true")
     r.add_argument("--rescore", action="store_true",
                    help="continue finished runs by a few steps with the solver as built now")
+    r.add_argument("--motion", choices=sorted(MOTIONS), default="approach",
+                   help="approach: towards the wall (Brenner); sliding: parallel to it")
     fp = sp.add_parser("fit")
     fp.add_argument("--cpd", type=int, default=8, choices=[4, 8, 12, 16])
     sp.add_parser("plot")
     a = ap.parse_args()
     if a.cmd == "run":
         for gap in a.gap or ([0.5] if a.quick else GAPS):
-            run_one(a.cpd, gap, a.force, a.quick, a.rescore)
+            run_one(a.cpd, gap, a.force, a.quick, a.rescore, a.motion)
     elif a.cmd == "fit":
         do_fit(a.cpd)
     else:

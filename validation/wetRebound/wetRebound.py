@@ -11,7 +11,8 @@ run:  each case in run/<name>/ (git-ignored), serial, nice; the body time series
       copied to results/<name>.h5 and a line appended to results/runs.csv; finished
       runs are skipped unless --force. --quick: the St 152 case at 6 cells/d to the
       rebound (about a minute; results/quick.csv).
-plot: results/table.md, results/restitution.png, results/trajectories.png.
+plot: results/table.md (with the quasi-steady Stokes film estimate of each run), metrics.json,
+      results/restitution.png, results/trajectories.png.
 collect: recompute the measured columns of results/runs.csv from results/<name>.h5
       (after a change of the analysis; the run columns are kept).
 
@@ -224,6 +225,38 @@ def write_metrics(rows):
     print("wetRebound: results/metrics.json", metrics)
 
 
+def film_estimate(st, cpd, saturation):
+    """e/e_dry of quasi-steady Stokes lubrication alone: the sphere loses I/St of its speed
+    between the collision onset (4 resolved gaps of 0.62 cells) and the saturation gap on the
+    way in, bounces with e_dry and loses I/St again on the way out, I the integral of
+    Brenner's excess resistance lambda - 1 over eps = h/a between the two gaps (m du = -6 pi mu
+    a (lambda - 1) dh, the far-field drag balanced by the net weight). No inertia of the fluid,
+    no contact time: what the film model can give at most."""
+    sys.path.insert(0, str(Path(HERE).parent / "lubricationResolution"))
+    from sphereWallStokes import brenner
+    onset = 2 * 4 * 0.62 / cpd                     # h/a
+    eps = np.logspace(math.log10(saturation), math.log10(onset), 400)
+    lam = np.array([brenner(x) for x in eps])
+    loss = float(np.sum(0.5 * (lam[1:] + lam[:-1] - 2) * np.diff(eps))) / st
+    return (E_DRY * (1 - loss) - loss) / E_DRY
+
+
+def film_table(rows):
+    """Markdown: the film estimate beside each run of the default maxOverlap."""
+    lines = ["Quasi-steady Stokes film estimate (`film_estimate`: lubrication losses only, from "
+             "the onset gap to the saturation gap, in and out) against the runs and the master "
+             "curve:", "",
+             "| case | cells/d | saturation | St | e/e_dry run | film estimate | exp(-35/St) |",
+             "|---|---|---|---|---|---|---|"]
+    for r in rows:
+        if r["maxOverlap"] != "0.1":
+            continue
+        est = film_estimate(float(r["St"]), int(r["cpd"]), float(r["saturation"]))
+        lines.append(f"| St {r['St_case']} | {r['cpd']} | {r['saturation']} | {float(r['St']):.0f} | "
+                     f"{float(r['e_over_edry']):.3f} | {est:.3f} | {float(r['master']):.3f} |")
+    return lines
+
+
 def do_plot():
     import matplotlib
     matplotlib.use("Agg")
@@ -252,6 +285,7 @@ def do_plot():
                      f"{r.get('J_hydro_out', '-')} | {r.get('suction', '-')} | "
                      f"{float(r['max_overlap_a']):.3f} | "
                      f"{r['wall_s']} s |")
+    lines += [""] + film_table(rows)
     with open(os.path.join(RESULTS, "table.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))

@@ -60,13 +60,13 @@ ACTIVATION_OVER_DELTA = 4.0   # collision::LubricationParameters::kActivationOve
 RESCORE_STEPS = 2       # steps a finished run is continued by to rescore its correction
 BOX_HALF, BOX_TOP = 6.0, 12.0
 FIELDS = ["name", "cpd", "gap", "cells", "dt", "steps", "F_hydro", "F_collision", "F_total",
-          "brenner", "error_pct", "error_pct_hydro_only", "unsteadiness", "cpu_s", "host",
-          "date", "commit"]
+          "brenner", "error_pct", "error_pct_hydro_only", "unsteadiness", "box_half", "cpu_s",
+          "host", "date", "commit"]
 SLIDING_CSV = os.path.join(RESULTS, "slidingRuns.csv")
 SLIDING_FIELDS = ["name", "cpd", "gap", "cells", "dt", "steps", "F_hydro", "F_collision",
                   "F_total", "reference", "error_pct", "error_pct_hydro_only", "T_hydro",
-                  "T_collision", "T_total", "torque_reference", "unsteadiness", "cpu_s", "host",
-                  "date", "commit"]
+                  "T_collision", "T_total", "torque_reference", "unsteadiness", "box_half",
+                  "cpu_s", "host", "date", "commit"]
 # the imposed velocity of each motion and the axis its force is read along; the sliding
 # sphere's torque about y (the rolling axis) is read beside its drag
 MOTIONS = {"approach": ((0.0, 0.0, -U), 2), "sliding": ((U, 0.0, 0.0), 0)}
@@ -94,12 +94,12 @@ def brenner(gap):
     return 4.0 / 3.0 * math.sinh(alpha) * s
 
 
-def write_case(case, cpd, gap, end_time, motion="approach"):
+def write_case(case, cpd, gap, end_time, motion="approach", box_half=BOX_HALF):
     h = 1.0 / cpd
     top_fine = math.ceil((gap + 1.0 + 0.25) / h) * h
     fine = math.ceil((A + 0.25) / h) * h
     refined_box_mesh(case, [
-        "--box", *map(str, (-BOX_HALF, BOX_HALF, -BOX_HALF, BOX_HALF, 0.0, BOX_TOP)),
+        "--box", *map(str, (-box_half, box_half, -box_half, box_half, 0.0, BOX_TOP)),
         "--fine", *(f"{v:.12g}" for v in (-fine, fine, -fine, fine, 0.0, top_fine)),
         "--h", f"{h:.12g}", "--growth", "1.15", "--max-ratio", "16",
         "--patch", "xMin:wall", "--patch", "xMax:wall", "--patch", "yMin:wall",
@@ -274,8 +274,9 @@ def rescore(case, info):
         sys.exit(f"lubricationResolution: the solver failed in {case} (log.rescore)")
 
 
-def run_one(cpd, gap, force, quick, rescore_only=False, motion="approach"):
-    name = f"c{cpd}-h{gap:g}" + ("-sliding" if motion == "sliding" else "") + ("-quick" if quick else "")
+def run_one(cpd, gap, force, quick, rescore_only=False, motion="approach", box_half=BOX_HALF):
+    name = (f"c{cpd}-h{gap:g}" + ("-sliding" if motion == "sliding" else "")
+            + (f"-box{box_half:g}" if box_half != BOX_HALF else "") + ("-quick" if quick else ""))
     case = os.path.join(RUNS, name)
     if rescore_only:
         if not os.path.isdir(case):
@@ -286,7 +287,7 @@ def run_one(cpd, gap, force, quick, rescore_only=False, motion="approach"):
             shutil.rmtree(case)
         if not os.path.isdir(case):
             os.makedirs(case)
-            info = write_case(case, cpd, gap, 1.0 if quick else T_STEADY, motion)
+            info = write_case(case, cpd, gap, 1.0 if quick else T_STEADY, motion, box_half)
             with open(os.path.join(case, "info.json"), "w") as f:
                 json.dump(info, f)
         if run_logged(["blockMesh"], case, "log.blockMesh") != 0:
@@ -315,7 +316,8 @@ def run_one(cpd, gap, force, quick, rescore_only=False, motion="approach"):
            "F_hydro": f"{x['hydro']:.6g}", "F_collision": f"{x['collision']:.6g}",
            "F_total": f"{x['total']:.6g}", "error_pct": f"{err:.3f}",
            "error_pct_hydro_only": f"{err_h:.3f}", "unsteadiness": f"{x['unsteadiness']:.2e}",
-           "cpu_s": f"{cpu_seconds(case, 'log.solver'):.0f}", **provenance()}
+           "box_half": f"{box_half:g}", "cpu_s": f"{cpu_seconds(case, 'log.solver'):.0f}",
+           **provenance()}
     os.makedirs(RESULTS, exist_ok=True)
     if motion == "sliding":
         row.update(reference=f"{ref:.6g}", T_hydro=f"{x['torque_hydro']:.6g}",
@@ -368,7 +370,7 @@ def do_fit(cpd):
     the runs at cpd closest to Brenner's (least squares of the relative errors over the gaps);
     results/fit.md with the errors at c and at 0.5 and 2 times it."""
     rows = sorted((float(r["gap"]), float(r["F_hydro"])) for r in read_csv(RUNS_CSV, missing_ok=False)
-                  if int(r["cpd"]) == cpd)
+                  if int(r["cpd"]) == cpd and default_box(r))
     if len(rows) < 3:
         sys.exit(f"lubricationResolution fit: {len(rows)} runs at {cpd} cells/d in {RUNS_CSV} "
                  f"(at least 3 gaps needed)")
@@ -416,10 +418,7 @@ def do_fit(cpd):
 
 
 def do_plot():
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    rows = read_csv(RUNS_CSV, missing_ok=False)
+    rows = [r for r in read_csv(RUNS_CSV, missing_ok=False) if default_box(r)]
     cpds = sorted({int(r["cpd"]) for r in rows})
     gaps = sorted({float(r["gap"]) for r in rows}, reverse=True)
     by = {(int(r["cpd"]), float(r["gap"])): r for r in rows}
@@ -432,29 +431,11 @@ def do_plot():
             cells.append("-" if r is None else
                          f"{float(r['error_pct']):+.1f} % ({float(r['error_pct_hydro_only']):+.1f} %)")
         lines.append(f"| {g:g} | {brenner(g / A):.4g} | " + " | ".join(cells) + " |")
-    fig, axs = plt.subplots(1, 2, figsize=(11, 4))
     gg = np.logspace(-3, math.log10(2), 200)
-    axs[0].loglog(gg, [brenner(x / A) for x in gg], "k-", label="Brenner (1961), exact")
-    for k, c in enumerate(cpds):
-        sel = sorted((float(r["gap"]), r) for r in rows if int(r["cpd"]) == c)
-        h = [g for g, _ in sel]
-        name = f"{c} cells/d" + (" (c fitted)" if c == FIT_CPD else "")
-        axs[0].loglog(h, [float(r["F_total"]) for _, r in sel], "o-", color=f"C{k}",
-                      label=f"{name}: resolved + correction")
-        axs[0].loglog(h, [float(r["F_hydro"]) for _, r in sel], "x:", color=f"C{k}",
-                      label=f"{name}: resolved alone")
-        axs[1].semilogx(h, [float(r["error_pct"]) for _, r in sel], "o-", color=f"C{k}", label=name)
-    axs[0].set_xlabel("gap h / d")
-    axs[0].set_ylabel("F / (6 pi mu a U)")
-    axs[1].set_xlabel("gap h / d")
-    axs[1].set_ylabel("resolved + correction against Brenner [%]")
-    axs[1].axhspan(-10, 10, color="0.9")
-    for ax in axs:
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=7)
-    fig.suptitle("Sphere approaching a wall (Stokes): resolved force plus lubrication correction")
-    fig.tight_layout()
-    fig.savefig(os.path.join(RESULTS, "force.png"), dpi=120)
+    force_figure(rows, (gg, [brenner(x / A) for x in gg]), "Brenner (1961), exact",
+                 "F / (6 pi mu a U)", "resolved + correction against Brenner [%]",
+                 "Sphere approaching a wall (Stokes): resolved force plus lubrication correction",
+                 os.path.join(RESULTS, "force.png"), log_force=True)
     metrics = {"max_abs_force_error_pct": round(max(abs(float(r["error_pct"])) for r in rows), 3)}
     if FIT_CPD in cpds:
         best, worst = do_fit(FIT_CPD)
@@ -469,7 +450,14 @@ def do_plot():
         metrics[f"max_abs_force_error_pct_{c}"] = round(
             max(abs(float(r["error_pct"])) for r in rows if int(r["cpd"]) == c), 3)
         metrics[f"gaps_{c}"] = sum(1 for r in rows if int(r["cpd"]) == c)
-    sliding = read_csv(SLIDING_CSV)
+    sliding = [r for r in read_csv(SLIDING_CSV) if default_box(r)]
+    box_checks = [r for r in read_csv(SLIDING_CSV) + read_csv(RUNS_CSV) if not default_box(r)]
+    if box_checks:
+        lines += ["", f"Checks of the box ({2 * BOX_HALF:g} d wide in the runs above): the same "
+                  "run in a wider box.", "", "| run | box width [d] | total against the exact force |",
+                  "|---|---|---|"]
+        lines += [f"| {r['name']} | {2 * float(r['box_half']):g} | {float(r['error_pct']):+.2f} % |"
+                  for r in box_checks]
     if sliding:
         lines += ["", sliding_table_and_figure(sliding)]
         metrics["max_abs_sliding_force_error_pct"] = round(
@@ -487,12 +475,47 @@ def do_plot():
     print("\n".join(lines))
 
 
-def sliding_table_and_figure(rows):
-    """The sliding sphere's table (markdown, returned) and results/sliding.png: drag and torque,
-    resolved plus correction against the reference of sphereWallStokes.py."""
+def force_figure(rows, reference, reference_label, force_label, error_label, title, path,
+                 log_force):
+    """Two panels against the gap: the force of each resolution (resolved plus correction, and
+    resolved alone) with the exact curve, and the error of the total with the 10 % band."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    fig, axs = plt.subplots(1, 2, figsize=(11, 4))
+    draw = axs[0].loglog if log_force else axs[0].semilogx
+    draw(*reference, "k-", label=reference_label)
+    for k, c in enumerate(sorted({int(r["cpd"]) for r in rows})):
+        sel = sorted((float(r["gap"]), r) for r in rows if int(r["cpd"]) == c)
+        h = [g for g, _ in sel]
+        name = f"{c} cells/d" + (" (c fitted)" if c == FIT_CPD else "")
+        draw(h, [float(r["F_total"]) for _, r in sel], "o-", color=f"C{k}",
+             label=f"{name}: resolved + correction")
+        draw(h, [float(r["F_hydro"]) for _, r in sel], "x:", color=f"C{k}",
+             label=f"{name}: resolved alone")
+        axs[1].semilogx(h, [float(r["error_pct"]) for _, r in sel], "o-", color=f"C{k}", label=name)
+    axs[0].set_xlabel("gap h / d")
+    axs[0].set_ylabel(force_label)
+    axs[1].set_xlabel("gap h / d")
+    axs[1].set_ylabel(error_label)
+    axs[1].axhspan(-10, 10, color="0.9")
+    for ax in axs:
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+def default_box(row):
+    """Whether a run is in the standard box (rows without the column are)."""
+    return float(row.get("box_half") or BOX_HALF) == BOX_HALF
+
+
+def sliding_table_and_figure(rows):
+    """The sliding sphere's table (markdown, returned) and results/sliding.png: drag and torque,
+    resolved plus correction against the reference of sphereWallStokes.py."""
     cpds = sorted({int(r["cpd"]) for r in rows})
     gaps = sorted({float(r["gap"]) for r in rows}, reverse=True)
     by = {(int(r["cpd"]), float(r["gap"])): r for r in rows}
@@ -512,29 +535,11 @@ def sliding_table_and_figure(rows):
             torque.append("-" if r is None else f"{float(r['T_total']):.4g}")
         lines.append(f"| {g:g} | {float(any_row['reference']):.4g} | " + " | ".join(drag)
                      + f" | {float(any_row['torque_reference']):.4g} | " + " | ".join(torque) + " |")
-    fig, axs = plt.subplots(1, 2, figsize=(11, 4))
     ref = sorted((float(r["gap"]), float(r["reference"])) for r in rows)
-    axs[0].semilogx([g for g, _ in ref], [f for _, f in ref], "k-", label="reference (sphereWallStokes.py)")
-    for k, c in enumerate(cpds):
-        sel = sorted((float(r["gap"]), r) for r in rows if int(r["cpd"]) == c)
-        h = [g for g, _ in sel]
-        axs[0].semilogx(h, [float(r["F_total"]) for _, r in sel], "o-", color=f"C{k}",
-                        label=f"{c} cells/d: resolved + correction")
-        axs[0].semilogx(h, [float(r["F_hydro"]) for _, r in sel], "x:", color=f"C{k}",
-                        label=f"{c} cells/d: resolved alone")
-        axs[1].semilogx(h, [float(r["error_pct"]) for _, r in sel], "o-", color=f"C{k}",
-                        label=f"{c} cells/d")
-    axs[0].set_xlabel("gap h / d")
-    axs[0].set_ylabel("drag F_x / (6 pi mu a U)")
-    axs[1].set_xlabel("gap h / d")
-    axs[1].set_ylabel("resolved + correction against the reference [%]")
-    axs[1].axhspan(-10, 10, color="0.9")
-    for ax in axs:
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=7)
-    fig.suptitle("Sphere sliding parallel to a wall (Stokes): resolved drag plus lubrication correction")
-    fig.tight_layout()
-    fig.savefig(os.path.join(RESULTS, "sliding.png"), dpi=120)
+    force_figure(rows, ([g for g, _ in ref], [f for _, f in ref]), "exact (sphereWallStokes.py)",
+                 "drag F_x / (6 pi mu a U)", "resolved + correction against the exact drag [%]",
+                 "Sphere sliding parallel to a wall (Stokes): resolved drag plus lubrication correction",
+                 os.path.join(RESULTS, "sliding.png"), log_force=False)
     return "\n".join(lines)
 
 
@@ -549,6 +554,9 @@ def main():
     r.add_argument("--force", action="store_true")
     r.add_argument("--rescore", action="store_true",
                    help="continue finished runs by a few steps with the solver as built now")
+    r.add_argument("--box-half", type=float, default=BOX_HALF,
+                   help=f"half width of the box in d (default {BOX_HALF:g}; other widths are "
+                        "checks of the box's effect, listed apart)")
     r.add_argument("--motion", choices=sorted(MOTIONS), default="approach",
                    help="approach: towards the wall (Brenner); sliding: parallel to it")
     fp = sp.add_parser("fit")
@@ -557,7 +565,7 @@ def main():
     a = ap.parse_args()
     if a.cmd == "run":
         for gap in a.gap or ([0.5] if a.quick else GAPS):
-            run_one(a.cpd, gap, a.force, a.quick, a.rescore, a.motion)
+            run_one(a.cpd, gap, a.force, a.quick, a.rescore, a.motion, a.box_half)
     elif a.cmd == "fit":
         do_fit(a.cpd)
     else:

@@ -43,6 +43,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
 from validationTools import (cpu_seconds, mesh_cells, provenance, read_csv,  # noqa: E402
                              refined_box_mesh, run_logged, write_csv, write_dict)
+from sphereWallStokes import brenner  # noqa: E402  (the exact series, gap over the radius)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 RESULTS = os.path.join(HERE, "results")
@@ -70,28 +71,6 @@ SLIDING_FIELDS = ["name", "cpd", "gap", "cells", "dt", "steps", "F_hydro", "F_co
 # the imposed velocity of each motion and the axis its force is read along; the sliding
 # sphere's torque about y (the rolling axis) is read beside its drag
 MOTIONS = {"approach": ((0.0, 0.0, -U), 2), "sliding": ((U, 0.0, 0.0), 0)}
-
-
-def brenner(gap):
-    """Brenner's (1961) F/(6 pi mu a U) of a sphere approaching a plane at the gap (units of
-    the radius a = 1 here: gap/a), the series summed until its terms fall below 1e-14 of the sum
-    (an error after a million terms)."""
-    alpha = math.acosh(1 + gap)
-    s = 0.0
-    n = 1
-    while True:
-        k = 2 * n + 1
-        num = 2 * math.sinh(k * alpha) + k * math.sinh(2 * alpha)
-        den = 4 * math.sinh((n + 0.5) * alpha) ** 2 - k * k * math.sinh(alpha) ** 2
-        term = n * (n + 1) / ((2 * n - 1) * (2 * n + 3)) * (num / den - 1)
-        s += term
-        if abs(term) < 1e-14 * abs(s):
-            break
-        if n >= 1000000:
-            raise RuntimeError(f"brenner: the series at gap/a = {gap} has not converged in {n} "
-                               f"terms (last term {term:.3e}, sum {s:.6e})")
-        n += 1
-    return 4.0 / 3.0 * math.sinh(alpha) * s
 
 
 def write_case(case, cpd, gap, end_time, motion="approach", box_half=BOX_HALF):

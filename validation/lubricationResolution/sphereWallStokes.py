@@ -113,10 +113,11 @@ PHI_NODES = 8                # trapezoidal rule in phi, exact for cos(k phi), k 
 # --------------------------------------------------------------------------------------------
 
 def brenner(h):
-    """Brenner's (1961) exact f_perp, summed until a term is below 1e-16 of the sum."""
+    """Brenner's (1961) exact f_perp, summed until a term is below 1e-16 of the sum (an error
+    after a million terms)."""
     alpha = math.acosh(1.0 + h)
-    total, n = 0.0, 1
-    while True:
+    total = 0.0
+    for n in range(1, 1000001):
         k = 2 * n + 1
         num = 2.0 * math.sinh(k * alpha) + k * math.sinh(2.0 * alpha)
         den = 4.0 * math.sinh((n + 0.5) * alpha) ** 2 - (k * math.sinh(alpha)) ** 2
@@ -124,7 +125,8 @@ def brenner(h):
         total += term
         if abs(term) < 1e-16 * abs(total):
             return 4.0 / 3.0 * math.sinh(alpha) * total
-        n += 1
+    raise RuntimeError(f"brenner: the series at h/a = {h} has not converged in {n} terms "
+                       f"(last term {term:.3e}, sum {total:.6e})")
 
 
 def faxen_parallel(h):

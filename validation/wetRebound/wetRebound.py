@@ -46,12 +46,19 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
 from validationTools import (cpu_seconds, provenance, read_csv, run_logged,  # noqa: E402
                              substitute_re, write_csv)
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "lubricationResolution"))
+from sphereWallStokes import brenner  # noqa: E402  (Brenner's exact series, gap over the radius)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 RESULTS = os.path.join(HERE, "results")
 RUNS_CSV = os.path.join(RESULTS, "runs.csv")
 RHO_P = 7800.0
 E_DRY = 0.97
+# the library's defaults the film estimate uses: the wall's resolved gap in cells
+# (LubricationParameters::kWallResolvedGapCells) and the activation gap in resolved gaps
+# (kActivationOverResolvedGap)
+RESOLVED_GAP_CELLS = 0.62
+ACTIVATION_OVER_DELTA = 4.0
 
 # name: (St, Re, rho_f, mu, d) of Gondret et al. 2002 (physics-references.md 2)
 CASES = {
@@ -232,9 +239,7 @@ def film_estimate(st, cpd, saturation):
     Brenner's excess resistance lambda - 1 over eps = h/a between the two gaps (m du = -6 pi mu
     a (lambda - 1) dh, the far-field drag balanced by the net weight). No inertia of the fluid,
     no contact time: what the film model can give at most."""
-    sys.path.insert(0, str(Path(HERE).parent / "lubricationResolution"))
-    from sphereWallStokes import brenner
-    onset = 2 * 4 * 0.62 / cpd                     # h/a
+    onset = 2 * ACTIVATION_OVER_DELTA * RESOLVED_GAP_CELLS / cpd     # h/a
     eps = np.logspace(math.log10(saturation), math.log10(onset), 400)
     lam = np.array([brenner(x) for x in eps])
     loss = float(np.sum(0.5 * (lam[1:] + lam[:-1] - 2) * np.diff(eps))) / st

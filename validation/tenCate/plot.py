@@ -90,8 +90,10 @@ def main():
     figs = {}
     for path in runs:
         tag = os.path.basename(path)[:-3]
-        name, cpd, *rest = tag.split("-")       # <case>-<cpd>[-<forcing>]
-        forcing = rest[0] if rest else DEFAULT_FORCING
+        name, cpd, *rest = tag.split("-")       # <case>-<cpd>[-<forcing>][-column<W>]
+        column = next((v[len("column"):] for v in rest if v.startswith("column")), "")
+        forcing = next((v for v in rest if not v.startswith("column")), DEFAULT_FORCING)
+        variant = "-".join(rest)
         t, z, w, fh, fc, info = load_run(path)
         land = landing(t, z, w, fh, FLUID_DENSITY[name])
         gap_ref, u_ref = load_reference(name)
@@ -131,7 +133,8 @@ def main():
         approach = (t_int <= t[-1]) & (gap_int - gap0_ref + gap[0] > 1.0)
         gap_sim_int = np.interp(t_int[approach], t, (z - D / 2) / D)
         max_gap_vs_u = np.max(np.abs(gap_sim_int - (gap_int[approach] - gap0_ref + gap[0])))
-        rows.append(dict(case=name, cpd=int(cpd), forcing=forcing, cells=info.get("cells", ""),
+        rows.append(dict(case=name, cpd=int(cpd), forcing=forcing, variant=variant,
+                         column=column or "2.5", cells=info.get("cells", ""),
                          ranks=info.get("ranks", ""),
                          steps=info.get("steps", ""), wallSeconds=info.get("wallSeconds", ""),
                          umax=umax, umaxRef=uref, umaxError=(umax - uref) / uref,
@@ -150,8 +153,9 @@ def main():
             ax[1].plot(u_ref[:, 0], u_ref[:, 1], "ko", ms=3, label="ten Cate et al. 2002")
             figs[name] = (fig, ax)
         fig, ax = figs[name]
-        style = "-" if forcing == DEFAULT_FORCING else ":"
-        label = f"{cpd} cells/D" + ("" if forcing == DEFAULT_FORCING else f", {forcing}")
+        style = "-" if not variant else ":"
+        label = (f"{cpd} cells/D" + ("" if forcing == DEFAULT_FORCING else f", {forcing}")
+                 + (f", fine column {column} d" if column else ""))
         ax[0].plot(t, (z - D / 2) / D, style, label=label)
         ax[1].plot(t, w, style, label=label)
     for name, (fig, ax) in figs.items():
@@ -162,17 +166,17 @@ def main():
         fig.suptitle(f"ten Cate settling sphere, case {name}")
         fig.tight_layout()
         fig.savefig(os.path.join(here, f"tenCate_{name}.png"), dpi=110)
-    rows.sort(key=lambda r: (r["case"], r["forcing"] != DEFAULT_FORCING, r["forcing"], r["cpd"]))
+    rows.sort(key=lambda r: (r["case"], r["variant"] != "", r["variant"], r["cpd"]))
     write_csv(os.path.join(here, "results", "summary.csv"), rows)
     with open(os.path.join(here, "results", "summary.md"), "w") as f:
-        f.write("| case | forcing | cells/D | cells | ranks | steps | wall (s) | u_max (m/s) | ref. | u_max error "
+        f.write("| case | forcing | fine column (d) | cells/D | cells | ranks | steps | wall (s) | u_max (m/s) | ref. | u_max error "
                 "| rms u error / u_max | max gap error / d | compared up to t (s) "
                 "| rms u error, gap > 1 d | max gap error, gap > 1 d | the same, start offset removed "
                 "| max gap error against the data's integrated velocity, gap > 1 d "
                 "| the data's gap curve against their integrated velocity |"
-                "\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
+                "\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
         for r in rows:
-            f.write(f"| {r['case']} | {r['forcing']} | {r['cpd']} | {r['cells']} | {r['ranks']} | {r['steps']} | {r['wallSeconds']} "
+            f.write(f"| {r['case']} | {r['forcing']} | {r['column']} | {r['cpd']} | {r['cells']} | {r['ranks']} | {r['steps']} | {r['wallSeconds']} "
                     f"| {r['umax']:.5f} | {r['umaxRef']:.5f} | {100 * r['umaxError']:+.1f} % "
                     f"| {100 * r['rmsUError']:.1f} % | {r['maxGapError']:.3f} | {r['endTime']:.3f}"
                     f"{' (contact)' if r['contact'] else ''} "
@@ -181,7 +185,7 @@ def main():
                     f"| {r['maxGapErrorVsVelocityData']:.3f} | {r['dataInconsistency']:.3f} |\n")
     metrics = {}
     for r in rows:
-        key = f"{r['case']}_{r['cpd']}" + ("" if r["forcing"] == DEFAULT_FORCING else f"_{r['forcing']}")
+        key = f"{r['case']}_{r['cpd']}" + ("" if not r["variant"] else f"_{r['variant'].replace('-', '_')}")
         metrics[f"{key}_umax_error_pct"] = round(100 * r["umaxError"], 4)
         metrics[f"{key}_rms_u_error_pct"] = round(100 * r["rmsUError"], 4)
         metrics[f"{key}_max_gap_error_d"] = round(float(r["maxGapError"]), 5)
@@ -206,6 +210,7 @@ def cost_of_target(rows, path):
     steps and core-seconds (wall time x ranks; the runs shared the machine, so upper bounds).
     Writes the table to path; returns its metrics."""
     metrics = {}
+    rows = [r for r in rows if r["column"] == "2.5"]      # the case's own mesh only
     lines = [f"| case | forcing | cells/D run | u_max error at them | coarsest within {COST_TARGET_PCT:g} % "
              "| cells | steps | core-seconds |", "|---|---|---|---|---|---|---|---|"]
     for case in sorted({r["case"] for r in rows}):

@@ -129,6 +129,26 @@ def brenner(h):
                        f"(last term {term:.3e}, sum {total:.6e})")
 
 
+def two_spheres_approaching(xi):
+    """The force on each of two equal spheres moving towards each other along their line of
+    centres at U (relative speed 2U), over 6 pi mu a U, at the gap xi = h/a between them:
+    Brenner's (1961) series for a sphere approaching a free surface at h/(2a), the plane of
+    symmetry of the pair (Stimson & Jeffery's problem with the velocities opposed). Summed
+    until a term is below 1e-16 of the sum (an error after a million terms)."""
+    alpha = math.acosh(1.0 + 0.5 * xi)
+    total = 0.0
+    for n in range(1, 1000001):
+        k = 2 * n + 1
+        num = 4.0 * math.cosh((n + 0.5) * alpha) ** 2 + (k * math.sinh(alpha)) ** 2
+        den = 2.0 * math.sinh(k * alpha) - k * math.sinh(2.0 * alpha)
+        term = n * (n + 1) / ((2 * n - 1) * (2 * n + 3)) * (num / den - 1.0)
+        total += term
+        if abs(term) < 1e-16 * abs(total):
+            return 4.0 / 3.0 * math.sinh(alpha) * total
+    raise RuntimeError(f"two_spheres_approaching: the series at h/a = {xi} has not converged in "
+                       f"{n} terms (last term {term:.3e}, sum {total:.6e})")
+
+
 def faxen_parallel(h):
     """Faxen's far-field f_par, s = a/(h + a)."""
     s = 1.0 / (1.0 + h)
@@ -652,6 +672,22 @@ def check():
           f"(tolerance 1e-5): {verdict(div < 1e-5 and mom < 1e-5, 'Stokes equations')}")
     print(f"   force and torque over the sphere xi = alpha/2 against the particle's surface: "
           f"{surf:.1e} (tolerance 1e-8): {verdict(surf < 1e-8, 'traction balance')}")
+
+    # two equal spheres approaching: near contact Jeffrey & Onishi's (1984) singular terms
+    # X11 - X12 = 1/(2 xi) + (9/20) ln(1/xi) + const, the constant the same from xi = 1e-3 to
+    # 1e-5; far apart the reflections 1 + (3/2) s + (9/4) s^2, s = a/r (r = (2 + xi) a)
+    near = [two_spheres_approaching(x) - 1 / (2 * x) - 0.45 * math.log(1 / x)
+            for x in (1e-3, 1e-4, 1e-5)]
+    spread = max(near) - min(near)
+    far = [(x, two_spheres_approaching(x), 1 + 1.5 / (2 + x) + 2.25 / (2 + x) ** 2)
+           for x in (100.0, 1000.0)]
+    far_err = max(abs(v / r - 1) * (2 + x) ** 3 for x, v, r in far)
+    print(f"   two spheres approaching: lambda - 1/(2 xi) - (9/20) ln(1/xi) = "
+          + ", ".join(f"{v:.5f}" for v in near) + f" at xi = 1e-3, 1e-4, 1e-5 (spread "
+          f"{spread:.1e}, tolerance 2e-3): {verdict(spread < 2e-3, 'two spheres, contact')}")
+    print(f"   two spheres far apart against 1 + 3s/2 + 9s^2/4: largest |difference|/s^3 "
+          f"{far_err:.2f} at xi = 100, 1000 (tolerance 5): "
+          f"{verdict(far_err < 5, 'two spheres, far field')}")
 
     # interpolation of the table between its gaps against the series there
     gaps = sorted(r["gap_over_d"] for r in rows)

@@ -680,7 +680,7 @@ def spheroid_table_and_figure(rows, sphere_rows):
             lam = brenner(g / A)
             rey = any_row["reynolds_exact_gap_ratio"]
             lines.append(f"| {shape} | {SHAPES[shape][1] / A:.3f} | {g:g} | {par:.4g} | "
-                         + " | ".join(ratio) + f" | {rey or '-'} | "
+                         + " | ".join(ratio) + f" | {f'{float(rey):.4f}' if rey else '-'} | "
                          + (f"{change[g]:+.2f} %" if g in change else "-") + " | "
                          + " | ".join(excess) + f" | {lam * g / A:.4f}, {lam - A / g:.3f} |")
     import matplotlib

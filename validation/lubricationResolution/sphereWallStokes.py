@@ -112,41 +112,40 @@ PHI_NODES = 8                # trapezoidal rule in phi, exact for cos(k phi), k 
 # Closed forms and asymptotes the series is checked against (h = gap over the radius a)
 # --------------------------------------------------------------------------------------------
 
-def brenner(h):
-    """Brenner's (1961) exact f_perp, summed until a term is below 1e-16 of the sum (an error
-    after a million terms)."""
-    alpha = math.acosh(1.0 + h)
+def brenner_series(alpha, ratio, what):
+    """(4/3) sinh(alpha) sum_n n (n + 1)/((2n - 1)(2n + 3)) (ratio(n, alpha) - 1), the form of
+    Brenner's (1961) series, summed until a term is below 1e-16 of the sum (an error naming
+    what after a million terms)."""
     total = 0.0
     for n in range(1, 1000001):
-        k = 2 * n + 1
-        num = 2.0 * math.sinh(k * alpha) + k * math.sinh(2.0 * alpha)
-        den = 4.0 * math.sinh((n + 0.5) * alpha) ** 2 - (k * math.sinh(alpha)) ** 2
-        term = n * (n + 1) / ((2 * n - 1) * (2 * n + 3)) * (num / den - 1.0)
+        term = n * (n + 1) / ((2 * n - 1) * (2 * n + 3)) * (ratio(n, alpha) - 1.0)
         total += term
         if abs(term) < 1e-16 * abs(total):
             return 4.0 / 3.0 * math.sinh(alpha) * total
-    raise RuntimeError(f"brenner: the series at h/a = {h} has not converged in {n} terms "
-                       f"(last term {term:.3e}, sum {total:.6e})")
+    raise RuntimeError(f"{what}: the series has not converged in {n} terms (last term "
+                       f"{term:.3e}, sum {total:.6e})")
+
+
+def brenner(h):
+    """Brenner's (1961) exact f_perp of a sphere approaching a wall at h = gap/a."""
+    def wall(n, alpha):
+        k = 2 * n + 1
+        return ((2.0 * math.sinh(k * alpha) + k * math.sinh(2.0 * alpha))
+                / (4.0 * math.sinh((n + 0.5) * alpha) ** 2 - (k * math.sinh(alpha)) ** 2))
+    return brenner_series(math.acosh(1.0 + h), wall, f"brenner at h/a = {h}")
 
 
 def two_spheres_approaching(xi):
     """The force on each of two equal spheres moving towards each other along their line of
     centres at U (relative speed 2U), over 6 pi mu a U, at the gap xi = h/a between them:
     Brenner's (1961) series for a sphere approaching a free surface at h/(2a), the plane of
-    symmetry of the pair (Stimson & Jeffery's problem with the velocities opposed). Summed
-    until a term is below 1e-16 of the sum (an error after a million terms)."""
-    alpha = math.acosh(1.0 + 0.5 * xi)
-    total = 0.0
-    for n in range(1, 1000001):
+    symmetry of the pair (Stimson & Jeffery's problem with the velocities opposed)."""
+    def free_surface(n, alpha):
         k = 2 * n + 1
-        num = 4.0 * math.cosh((n + 0.5) * alpha) ** 2 + (k * math.sinh(alpha)) ** 2
-        den = 2.0 * math.sinh(k * alpha) - k * math.sinh(2.0 * alpha)
-        term = n * (n + 1) / ((2 * n - 1) * (2 * n + 3)) * (num / den - 1.0)
-        total += term
-        if abs(term) < 1e-16 * abs(total):
-            return 4.0 / 3.0 * math.sinh(alpha) * total
-    raise RuntimeError(f"two_spheres_approaching: the series at h/a = {xi} has not converged in "
-                       f"{n} terms (last term {term:.3e}, sum {total:.6e})")
+        return ((4.0 * math.cosh((n + 0.5) * alpha) ** 2 + (k * math.sinh(alpha)) ** 2)
+                / (2.0 * math.sinh(k * alpha) - k * math.sinh(2.0 * alpha)))
+    return brenner_series(math.acosh(1.0 + 0.5 * xi), free_surface,
+                          f"two_spheres_approaching at h/a = {xi}")
 
 
 def faxen_parallel(h):

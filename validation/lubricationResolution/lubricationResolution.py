@@ -568,7 +568,7 @@ def do_plot():
             sel = [r for r in spheroids if r["shape"] == shape]
             for c in sorted({int(r["cpd"]) for r in sel}):
                 at = sorted((float(r["gap"]), r) for r in sel if int(r["cpd"]) == c)
-                metrics[f"{shape}_ratio_to_paraboloid_smallest_gap_{c}"] = round(
+                metrics[f"{shape}_ratio_to_paraboloid_{c}_h{at[0][0]:g}"] = round(
                     float(at[0][1]["ratio"]), 4)
                 metrics[f"{shape}_gaps_{c}"] = len(at)
             change = resolution_changes(sel)

@@ -67,6 +67,7 @@ LAMBDA = 1.0            # nu dt/h^2 (the forcing is unstable here at 4: README)
 T_STEADY = 8.0          # run length in d^2/nu (steady to about 1e-4 by 5 at 4 cells/d)
 FIT_CPD = 8             # the resolution the resolved gap is fitted at (README)
 ACTIVATION_OVER_DELTA = 4.0   # collision::LubricationParameters::kActivationOverResolvedGap
+WALL_RESOLVED_GAP_CELLS = 0.62   # the c of the module's resolved-gap form (fitted below, FIT_CPD)
 RESCORE_STEPS = 2       # steps a finished run is continued by to rescore its correction
 BOX_HALF, BOX_TOP = 6.0, 12.0
 FIELDS = ["name", "cpd", "gap", "cells", "dt", "steps", "F_hydro", "F_collision", "F_total",
@@ -435,17 +436,22 @@ def wall_lambda(eps):
     return 1 / eps - math.log(eps) / 5 - eps * math.log(eps) / 21 + 0.9713
 
 
-def resolved_gap_correction(gap, c, cpd, saturation=1e-3, activation_over_delta=None):
-    """The wall correction of the resolved-gap form over 6 pi mu a U (the law of
-    collision::LubricationGapLaw for a sphere and a wall, A = 1, B = 1/5): the singular terms at
-    the gap less those at the widened gap sqrt(x^2 + x_d^2), x_d = c h_cell/a, shifted to zero at
-    the activation gap 4 x_d. Used to fit c; the recorded results are the module's own."""
+def resolved_gap_correction(gap, c, cpd, saturation=1e-3, activation_over_delta=None,
+                            pair=False):
+    """The correction of the resolved-gap form over 6 pi mu a U (the law of
+    collision::LubricationGapLaw; a sphere and a wall: A = 1, B = 1/5; two equal spheres
+    approaching, each at U: A = 1/2, B = 9/20): the singular terms A/x + B ln(1/x) at the gap
+    less those at the widened gap sqrt(x^2 + x_d^2), x_d = c h_cell/a, shifted to zero at the
+    activation gap 4 x_d. Used to fit c; the recorded results are the module's own."""
     xd = c / cpd / A
     act = min((activation_over_delta or ACTIVATION_OVER_DELTA) * xd, 1.0)
     x = gap / A
     if x >= act:
         return 0.0
-    u = lambda y: 1 / y - 1 / math.hypot(y, xd) + 0.1 * math.log1p(xd * xd / (y * y))  # noqa: E731
+    a_coef, b_coef = (0.5, 0.45) if pair else (1.0, 0.2)
+
+    def u(y):
+        return a_coef * (1 / y - 1 / math.hypot(y, xd)) + 0.5 * b_coef * math.log1p(xd * xd / (y * y))
     return u(max(x, saturation)) - u(act)
 
 
@@ -561,6 +567,7 @@ def do_plot():
             metrics[f"max_abs_pair_force_error_pct_{c}"] = round(
                 max(abs(float(r["error_pct"])) for r in sel), 3)
             metrics[f"pair_gaps_{c}"] = len(sel)
+        metrics.update(pair_fit(pairs))
     spheroids = read_csv(SPHEROID_CSV)
     if spheroids:
         lines += ["", spheroid_table_and_figure(spheroids, rows)]
@@ -584,7 +591,7 @@ def do_plot():
 
 
 def force_figure(rows, reference, reference_label, force_label, error_label, title, path,
-                 log_force):
+                 log_force, fitted_here=True):
     """Two panels against the gap: the force of each resolution (resolved plus correction, and
     resolved alone) with the exact curve, and the error of the total with the 10 % band."""
     import matplotlib
@@ -596,7 +603,7 @@ def force_figure(rows, reference, reference_label, force_label, error_label, tit
     for k, c in enumerate(sorted({int(r["cpd"]) for r in rows})):
         sel = sorted((float(r["gap"]), r) for r in rows if int(r["cpd"]) == c)
         h = [g for g, _ in sel]
-        name = f"{c} cells/d" + (" (c fitted)" if c == FIT_CPD else "")
+        name = f"{c} cells/d" + (" (c fitted)" if fitted_here and c == FIT_CPD else "")
         draw(h, [float(r["F_total"]) for _, r in sel], "o-", color=f"C{k}",
              label=f"{name}: resolved + correction")
         draw(h, [float(r["F_hydro"]) for _, r in sel], "x:", color=f"C{k}",
@@ -614,6 +621,42 @@ def force_figure(rows, reference, reference_label, force_label, error_label, tit
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+
+
+def pair_fit(rows, cpd=FIT_CPD):
+    """results/pairFit.md: the pair's errors at cpd with the walls' resolved gap, with sqrt(2)
+    times it (the two surfaces' unresolved layers in quadrature) and with the least-squares c,
+    from the runs' resolved forces and the law's formula (the check of the formula: its
+    correction at the walls' c against the module's). Returns metrics."""
+    sel = sorted((float(r["gap"]), float(r["F_hydro"]), float(r["F_collision"])) for r in rows
+                 if int(r["cpd"]) == cpd)
+    if len(sel) < 3:
+        return {}
+    wall_c = WALL_RESOLVED_GAP_CELLS
+
+    def errors(c):
+        return [100 * ((fh + resolved_gap_correction(g, c, cpd, pair=True))
+                       / two_spheres_approaching(g / A) - 1) for g, fh, _ in sel]
+    formula_check = max(abs(resolved_gap_correction(g, wall_c, cpd, pair=True) - fc)
+                        / max(fc, 1e-12) for g, _, fc in sel if fc > 0)
+    best = min((i / 100 for i in range(10, 301)), key=lambda c: sum(e * e for e in errors(c)))
+    cs = {"walls' c": wall_c, "sqrt(2) x walls' c": math.sqrt(2) * wall_c, "least squares": best}
+    table = {k: errors(c) for k, c in cs.items()}
+    lines = [f"Two spheres approaching at {cpd} cells/d: resolved force plus the pair law's "
+             "correction (formula of `resolved_gap_correction`, pair terms) against the exact "
+             f"force, for three resolved gaps c (in cells). The formula at the walls' c against the "
+             f"module's correction: largest relative difference {formula_check:.1e}.", "",
+             "| h/d | " + " | ".join(f"{k}, c = {c:.3f}" for k, c in cs.items()) + " |",
+             "|---|---|---|---|"]
+    for i, (g, _, _) in enumerate(sel):
+        lines.append(f"| {g:g} | " + " | ".join(f"{table[k][i]:+.1f} %" for k in cs) + " |")
+    lines.append("| largest \\|error\\| | " + " | ".join(
+        f"{max(abs(e) for e in table[k]):.2f} %" for k in cs) + " |")
+    with open(os.path.join(RESULTS, "pairFit.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    return {f"max_abs_pair_force_error_pct_{cpd}_c_sqrt2": round(
+                max(abs(e) for e in table["sqrt(2) x walls' c"]), 3),
+            f"pair_least_squares_resolved_gap_cells_{cpd}": best}
 
 
 def pair_table_and_figure(rows):
@@ -635,7 +678,7 @@ def pair_table_and_figure(rows):
                  "exact (Brenner 1961, free surface)", "F / (6 pi mu a U)",
                  "resolved + correction against the exact force [%]",
                  "Two spheres approaching each other (Stokes): resolved force plus correction",
-                 os.path.join(RESULTS, "pair.png"), log_force=True)
+                 os.path.join(RESULTS, "pair.png"), log_force=True, fitted_here=False)
     return "\n".join(lines)
 
 

@@ -550,23 +550,11 @@ def do_plot():
                   for r in box_checks]
     if sliding:
         lines += ["", sliding_table_and_figure(sliding)]
-        metrics["max_abs_sliding_force_error_pct"] = round(
-            max(abs(float(r["error_pct"])) for r in sliding), 3)
-        for c in sorted({int(r["cpd"]) for r in sliding}):
-            sel = [r for r in sliding if int(r["cpd"]) == c]
-            metrics[f"max_abs_sliding_force_error_pct_{c}"] = round(
-                max(abs(float(r["error_pct"])) for r in sel), 3)
-            metrics[f"sliding_gaps_{c}"] = len(sel)
+        metrics.update(error_metrics(sliding, "sliding"))
     pairs = read_csv(PAIR_CSV)
     if pairs:
         lines += ["", pair_table_and_figure(pairs)]
-        metrics["max_abs_pair_force_error_pct"] = round(
-            max(abs(float(r["error_pct"])) for r in pairs), 3)
-        for c in sorted({int(r["cpd"]) for r in pairs}):
-            sel = [r for r in pairs if int(r["cpd"]) == c]
-            metrics[f"max_abs_pair_force_error_pct_{c}"] = round(
-                max(abs(float(r["error_pct"])) for r in sel), 3)
-            metrics[f"pair_gaps_{c}"] = len(sel)
+        metrics.update(error_metrics(pairs, "pair"))
         metrics.update(pair_fit(pairs))
     spheroids = read_csv(SPHEROID_CSV)
     if spheroids:
@@ -621,6 +609,17 @@ def force_figure(rows, reference, reference_label, force_label, error_label, tit
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+
+
+def error_metrics(rows, kind):
+    """max_abs_<kind>_force_error_pct over the rows, and per resolution with <kind>_gaps_N."""
+    out = {f"max_abs_{kind}_force_error_pct": round(max(abs(float(r["error_pct"])) for r in rows), 3)}
+    for c in sorted({int(r["cpd"]) for r in rows}):
+        sel = [r for r in rows if int(r["cpd"]) == c]
+        out[f"max_abs_{kind}_force_error_pct_{c}"] = round(
+            max(abs(float(r["error_pct"])) for r in sel), 3)
+        out[f"{kind}_gaps_{c}"] = len(sel)
+    return out
 
 
 def pair_fit(rows, cpd=FIT_CPD):

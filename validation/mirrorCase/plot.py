@@ -10,6 +10,7 @@ summary.md (per method: statuses, worst |d - d*|/eps_d, bracket check, scale
 invariance). Debian's /usr/bin/python3 with python3-matplotlib.
 """
 import collections
+import json
 import os
 import sys
 from pathlib import Path
@@ -146,6 +147,7 @@ def main():
              "| method | parameter | runs | converged | other statuses | worst \\|d-d*\\|/eps_d (converged) "
              "| bracket misses d* | scale spread (max over configs of \\|err(Lambda)-err(1)\\|/eps_d) |",
              "|---|---|---|---|---|---|---|---|"]
+    metrics = {"bracket_misses_all_methods": sum(not r["bracketContains"] for r in rows)}
     keys = []
     for r in rows:
         k = (r["method"], r["parameter"])
@@ -165,6 +167,14 @@ def main():
         for conf, errs in byconf.items():
             if 1.0 in errs:
                 spread = max(spread, max(abs(e - errs[1.0]) for e in errs.values()) / conf[2])
+        if k[1] in ("", "start=eq3.3"):
+            tag = k[0] + ("Eq33" if k[1] else "")
+            metrics[tag + "_runs"] = len(rs)
+            metrics[tag + "_converged"] = st["converged"]
+            metrics[tag + "_bracket_misses"] = misses
+            if conv:
+                metrics[tag + "_worst_error_over_eps"] = float("%.4g" % worst)
+                metrics[tag + "_scale_spread_over_eps"] = float("%.3g" % spread)
         other = ", ".join("%s %d" % (s, n) for s, n in sorted(st.items()) if s != "converged") or "-"
         worst_s = "%.3g" % worst if conv else "n/a (ignores eps_d)"
         spread_s = "%.2g" % spread if conv else "-"
@@ -198,6 +208,12 @@ def main():
     lines += ["", "## Figures", ""] + ["![%s](%s)" % (m, m) for m in made]
     with open(os.path.join(outdir, "summary.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
+    # the headline figures, one flat JSON object (the methods run without a parameter, and the
+    # dual method from eq. 3.3)
+    os.makedirs(os.path.join(outdir, "results"), exist_ok=True)
+    with open(os.path.join(outdir, "results", "metrics.json"), "w") as f:
+        json.dump(metrics, f, indent=1, sort_keys=True)
+        f.write("\n")
     print("\n".join(lines[:40]))
 
 

@@ -622,40 +622,43 @@ def error_metrics(rows, kind):
     return out
 
 
-def pair_fit(rows, cpd=FIT_CPD):
-    """results/pairFit.md: the pair's errors at cpd with the walls' resolved gap, with sqrt(2)
-    times it (the two surfaces' unresolved layers in quadrature) and with the least-squares c,
-    from the runs' resolved forces and the law's formula (the check of the formula: its
-    correction at the walls' c against the module's). Returns metrics."""
-    sel = sorted((float(r["gap"]), float(r["F_hydro"]), float(r["F_collision"])) for r in rows
-                 if int(r["cpd"]) == cpd)
-    if len(sel) < 3:
-        return {}
+def pair_fit(rows):
+    """results/pairFit.md: per resolution, the pair's errors with the walls' resolved gap, with
+    sqrt(2) times it (the two surfaces' unresolved layers in quadrature) and, where three gaps
+    or more were run, with the least-squares c; from the runs' resolved forces and the law's
+    formula (checked: its correction at the walls' c against the module's). Returns metrics."""
     wall_c = WALL_RESOLVED_GAP_CELLS
+    lines, metrics = [], {}
+    for cpd in sorted({int(r["cpd"]) for r in rows}):
+        sel = sorted((float(r["gap"]), float(r["F_hydro"]), float(r["F_collision"]))
+                     for r in rows if int(r["cpd"]) == cpd)
 
-    def errors(c):
-        return [100 * ((fh + resolved_gap_correction(g, c, cpd, pair=True))
-                       / two_spheres_approaching(g / A) - 1) for g, fh, _ in sel]
-    formula_check = max(abs(resolved_gap_correction(g, wall_c, cpd, pair=True) - fc)
-                        / max(fc, 1e-12) for g, _, fc in sel if fc > 0)
-    best = min((i / 100 for i in range(10, 301)), key=lambda c: sum(e * e for e in errors(c)))
-    cs = {"walls' c": wall_c, "sqrt(2) x walls' c": math.sqrt(2) * wall_c, "least squares": best}
-    table = {k: errors(c) for k, c in cs.items()}
-    lines = [f"Two spheres approaching at {cpd} cells/d: resolved force plus the pair law's "
-             "correction (formula of `resolved_gap_correction`, pair terms) against the exact "
-             f"force, for three resolved gaps c (in cells). The formula at the walls' c against the "
-             f"module's correction: largest relative difference {formula_check:.1e}.", "",
-             "| h/d | " + " | ".join(f"{k}, c = {c:.3f}" for k, c in cs.items()) + " |",
-             "|---|---|---|---|"]
-    for i, (g, _, _) in enumerate(sel):
-        lines.append(f"| {g:g} | " + " | ".join(f"{table[k][i]:+.1f} %" for k in cs) + " |")
-    lines.append("| largest \\|error\\| | " + " | ".join(
-        f"{max(abs(e) for e in table[k]):.2f} %" for k in cs) + " |")
+        def errors(c):
+            return [100 * ((fh + resolved_gap_correction(g, c, cpd, pair=True))
+                           / two_spheres_approaching(g / A) - 1) for g, fh, _ in sel]
+        formula_check = max((abs(resolved_gap_correction(g, wall_c, cpd, pair=True) - fc) / fc
+                             for g, _, fc in sel if fc > 0), default=0.0)
+        cs = {"walls' c": wall_c, "sqrt(2) x walls' c": math.sqrt(2) * wall_c}
+        if len(sel) >= 3:
+            cs["least squares"] = min((i / 100 for i in range(10, 301)),
+                                      key=lambda c: sum(e * e for e in errors(c)))
+            metrics[f"pair_least_squares_resolved_gap_cells_{cpd}"] = cs["least squares"]
+        table = {k: errors(c) for k, c in cs.items()}
+        lines += [f"Two spheres approaching at {cpd} cells/d: resolved force plus the pair law's "
+                  "correction (formula of `resolved_gap_correction`, pair terms) against the exact "
+                  "force, for resolved gaps c in cells. The formula at the walls' c against the "
+                  f"module's correction: largest relative difference {formula_check:.1e}.", "",
+                  "| h/d | " + " | ".join(f"{k}, c = {c:.3f}" for k, c in cs.items()) + " |",
+                  "|---|" + "---|" * len(cs)]
+        for i, (g, _, _) in enumerate(sel):
+            lines.append(f"| {g:g} | " + " | ".join(f"{table[k][i]:+.1f} %" for k in cs) + " |")
+        lines += ["| largest \\|error\\| | " + " | ".join(
+            f"{max(abs(e) for e in table[k]):.2f} %" for k in cs) + " |", ""]
+        metrics[f"max_abs_pair_force_error_pct_{cpd}_c_sqrt2"] = round(
+            max(abs(e) for e in table["sqrt(2) x walls' c"]), 3)
     with open(os.path.join(RESULTS, "pairFit.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    return {f"max_abs_pair_force_error_pct_{cpd}_c_sqrt2": round(
-                max(abs(e) for e in table["sqrt(2) x walls' c"]), 3),
-            f"pair_least_squares_resolved_gap_cells_{cpd}": best}
+        f.write("\n".join(lines))
+    return metrics
 
 
 def pair_table_and_figure(rows):

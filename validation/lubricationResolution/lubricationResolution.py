@@ -390,7 +390,8 @@ def reynolds_exact_gap_ratio(shape, gap):
 
 def record_spheroid(case, name, shape, cpd, gap, x, quick):
     """Report a spheroid's run against the paraboloid's force and add its row to
-    results/spheroidRuns.csv (not for --quick)."""
+    results/spheroidRuns.csv; a --quick run writes its figures to the case's result.json
+    instead (read by tests/foam/lubricationResolutionQuick)."""
     par = paraboloid_force(shape, gap)
     ratio, ratio_h = x["total"] / par, x["hydro"] / par
     rey = reynolds_exact_gap_ratio(shape, gap)

@@ -68,6 +68,9 @@ T_STEADY = 8.0          # run length in d^2/nu (steady to about 1e-4 by 5 at 4 c
 FIT_CPD = 8             # the resolution the resolved gap is fitted at (README)
 ACTIVATION_OVER_DELTA = 4.0   # collision::LubricationParameters::kActivationOverResolvedGap
 WALL_RESOLVED_GAP_CELLS = 0.62   # the c of the module's resolved-gap form (fitted below, FIT_CPD)
+# the pairs' c: the wall's in quadrature for two diffuse surfaces
+# (collision::LubricationParameters::kPairResolvedGapCells; predicted, checked by --shape spherePair)
+PAIR_RESOLVED_GAP_CELLS = math.sqrt(2) * WALL_RESOLVED_GAP_CELLS
 RESCORE_STEPS = 2       # steps a finished run is continued by to rescore its correction
 BOX_HALF, BOX_TOP = 6.0, 12.0
 FIELDS = ["name", "cpd", "gap", "cells", "dt", "steps", "F_hydro", "F_collision", "F_total",
@@ -627,7 +630,8 @@ def pair_fit(rows):
     """results/pairFit.md: per resolution, the pair's errors with the walls' resolved gap, with
     sqrt(2) times it (the two surfaces' unresolved layers in quadrature) and, where three gaps
     or more were run, with the least-squares c; from the runs' resolved forces and the law's
-    formula (checked: its correction at the walls' c against the module's). Returns metrics."""
+    formula (checked: its correction at the pairs' c, PAIR_RESOLVED_GAP_CELLS, against the
+    module's). Returns metrics."""
     wall_c = WALL_RESOLVED_GAP_CELLS
     lines, metrics = [], {}
     for cpd in sorted({int(r["cpd"]) for r in rows}):
@@ -637,7 +641,8 @@ def pair_fit(rows):
         def errors(c):
             return [100 * ((fh + resolved_gap_correction(g, c, cpd, pair=True))
                            / two_spheres_approaching(g / A) - 1) for g, fh, _ in sel]
-        formula_check = max((abs(resolved_gap_correction(g, wall_c, cpd, pair=True) - fc) / fc
+        formula_check = max((abs(resolved_gap_correction(g, PAIR_RESOLVED_GAP_CELLS, cpd,
+                                                         pair=True) - fc) / fc
                              for g, _, fc in sel if fc > 0), default=0.0)
         cs = {"walls' c": wall_c, "sqrt(2) x walls' c": math.sqrt(2) * wall_c}
         if len(sel) >= 3:
@@ -647,7 +652,8 @@ def pair_fit(rows):
         table = {k: errors(c) for k, c in cs.items()}
         lines += [f"Two spheres approaching at {cpd} cells/d: resolved force plus the pair law's "
                   "correction (formula of `resolved_gap_correction`, pair terms) against the exact "
-                  "force, for resolved gaps c in cells. The formula at the walls' c against the "
+                  "force, for resolved gaps c in cells. The formula at the pairs' c (sqrt(2) x walls') "
+                  "against the "
                   f"module's correction: largest relative difference {formula_check:.1e}.", "",
                   "| h/d | " + " | ".join(f"{k}, c = {c:.3f}" for k, c in cs.items()) + " |",
                   "|---|" + "---|" * len(cs)]
@@ -668,8 +674,9 @@ def pair_table_and_figure(rows):
     by = {(int(r["cpd"]), float(r["gap"])): r for r in rows}
     lines = ["Two equal spheres approaching each other (each at U): the force on one, resolved + "
              "correction, over 6 pi mu a U against the exact series (Brenner's sphere and free "
-             "surface; resolved alone in brackets). h is the gap between the spheres; the pair "
-             "takes the walls' resolved gap c = 0.62, fitted on the sphere and the wall.", "",
+             "surface; resolved alone in brackets). h is the gap between the spheres; the pair's "
+             f"resolved gap c = {PAIR_RESOLVED_GAP_CELLS:.3f} is sqrt(2) x the walls' 0.62 "
+             "(fitted on the sphere and the wall), a prediction.", "",
              "| h/d | exact | " + " | ".join(f"{c} cells/d: total (resolved)" for c in cpds) + " |",
              "|---|---|" + "---|" * len(cpds)]
     for g in sorted({float(r["gap"]) for r in rows}, reverse=True):

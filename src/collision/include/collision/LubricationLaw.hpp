@@ -63,10 +63,13 @@ struct LubricationParameters {
   /// The resolved gap in cells of the module's flow solver (its defaults):
   /// fitted once on the resolved film force of a sphere approaching a wall at
   /// 8 cells/d (least squares over eleven gaps, 2 d to 1e-3 d) and checked at
-  /// 12 and 16 (validation/lubricationResolution, docs/collisions.md); pairs:
-  /// the wall's value (stated, not fitted).
+  /// 12 and 16 (validation/lubricationResolution, docs/collisions.md).
   static constexpr Scalar kWallResolvedGapCells = 0.62;
-  static constexpr Scalar kPairResolvedGapCells = kWallResolvedGapCells;
+  /// Pairs: two diffuse surfaces, each leaving the wall's unresolved layer,
+  /// combined in quadrature (sqrt(2) x the wall's value; predicted from the
+  /// wall's fit, not fitted; checked on two spheres approaching each other at
+  /// 8 and 12 cells/d, validation/lubricationResolution --shape spherePair).
+  static constexpr Scalar kPairResolvedGapCells = 1.41421356237309505 * kWallResolvedGapCells;
   /// The resolved-gap form acts below this many resolved gaps delta: beyond,
   /// its correction, about delta^2/(2 h^2) of the force, is at most 1/32.
   static constexpr Scalar kActivationOverResolvedGap = 4;

@@ -110,6 +110,8 @@ TEST(ContactLaw, OutOfRangeSettingsNameTheKeywordAndTheRangeOfTheConstants) {
        ContactParameters::kFrictionRange},
       {"rollingFriction", [](ModelSetup& s) { s.laws.contact.rollingFriction = 2; },
        ContactParameters::kRollingFrictionRange},
+      {"sustainedLoadOverlap", [](ModelSetup& s) { s.laws.contact.sustainedLoadOverlap = 0; },
+       ContactParameters::kSustainedLoadOverlapRange},
       {"maxOverlap", [](ModelSetup& s) { s.settings.maxOverlap = 0; },
        CollisionSettings::kMaxOverlapRange},
       {"subStepsPerContact", [](ModelSetup& s) { s.settings.subStepsPerContact = 3; },

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 using namespace collision;
 
@@ -387,6 +388,40 @@ TEST(DryCollision, ASustainedLoadIsCarriedWithinTheOverlapCap) {
       EXPECT_GT(resting, 2 * cap) << "without the load the spring of the contact time alone sinks it";
     }
   }
+}
+
+TEST(DryCollision, TheSustainedLoadOverlapSetsTheRestingOverlap) {
+  // the sphere of the test above, its weight declared, with the static
+  // overlap of a sustained load at 1/4, 1/2 and all of the cap: the stiffer
+  // the rule, the shallower it rests; within the cap at 1/4 and 1/2
+  const Scalar a = 2e-3, contactTime = 0.04, dt = 1e-4, drag = 1;
+  const Vec3 g(0, 0, -9.81);
+  const Scalar cap = 0.1 * a;
+  std::vector<Scalar> resting;
+  for (const Scalar fraction : {0.25, 0.5, 1.0}) {
+    ModelSetup s = contactOnly(0.9);
+    s.laws.contact.sustainedLoadOverlap = fraction;
+    CollisionModel model = makeModel(s, {PlaneWall{"floor", Vec3::Zero(), Vec3::UnitZ()}});
+    RigidBody b = sphere(a, Vec3(0, 0, a), Vec3::Zero());
+    for (int step = 0; step < 20000; ++step) {
+      std::vector<CollisionBody> cb{b.collisionBody()};
+      const Vec3 external = b.mass() * g - drag * b.velocity;
+      cb[0].externalForce = external;
+      std::vector<Vec3> F, T;
+      model.forces(cb, contactTime, dt, F, T);
+      advanceBody(b, F[0] + external, T[0], dt);
+      ASSERT_TRUE(b.centre.allFinite());
+    }
+    resting.push_back(a - b.centre.z());
+    EXPECT_GT(resting.back(), 0) << fraction;
+    // the spring is stiffened while the body creeps in (dF = k d(delta)):
+    // the rest overlap exceeds the fraction of the cap that the rule aims at
+    if (fraction <= 0.5) EXPECT_LE(resting.back(), cap) << fraction;
+  }
+  std::printf("resting overlap / cap at 1/4, 1/2, 1: %.3f %.3f %.3f\n", resting[0] / cap,
+              resting[1] / cap, resting[2] / cap);
+  EXPECT_LT(resting[0], resting[1]);
+  EXPECT_LT(resting[1], resting[2]);
 }
 
 TEST(DryCollision, ARestartInsideALoadedStackContinuesBitwise) {

@@ -19,12 +19,15 @@ struct ModelSetup {
   std::string model = "springDashpot";
   /// > 0: a film correction with this viscosity; 0: none
   Scalar filmViscosity = 0;
+  /// the film correction's factor on its damping estimate
+  Scalar filmDampingScale = 1;
 };
 
 inline CollisionModel makeModel(const ModelSetup& s, std::vector<PlaneWall> walls) {
   return CollisionModel(s.settings, PairModel::New(s.model, s.laws), WallModel::New(s.model, s.laws),
                         std::move(walls),
-                        s.filmViscosity > 0 ? std::make_unique<FilmCorrection>(s.filmViscosity)
+                        s.filmViscosity > 0 ? std::make_unique<FilmCorrection>(s.filmViscosity,
+                                                                               s.filmDampingScale)
                                             : nullptr);
 }
 

@@ -83,6 +83,7 @@ CollisionModel::CollisionModel(const CollisionSettings& settings,
 void CollisionModel::clearHistory() {
   direction_.clear();
   contact_.clear();
+  lastDamping_.clear();
 }
 
 std::vector<PairRecord> CollisionModel::history() const {
@@ -109,6 +110,7 @@ std::vector<PairRecord> CollisionModel::history() const {
     r.tangentialSpring = c.tangentialSpring;
     r.tangentialSlip = c.tangentialSlip;
   }
+  for (const auto& [k, f] : lastDamping_) record(k).dampingForce = f;
   std::vector<PairRecord> out;
   out.reserve(merged.size());
   for (const auto& kv : merged) out.push_back(kv.second);
@@ -133,10 +135,10 @@ void CollisionModel::setHistory(const std::vector<PairRecord>& records) {
     require(std::isfinite(r.springForce) && r.springForce >= 0 && std::isfinite(r.stiffness) &&
                 r.stiffness >= 0 && std::isfinite(r.overlap) && r.overlap >= 0 &&
                 r.contactForce.allFinite() && r.tangentialSpring.allFinite() &&
-                r.tangentialSlip.allFinite(),
+                r.tangentialSlip.allFinite() && r.dampingForce.allFinite(),
             "pair history " + pair +
-                ": spring force, stiffness and overlap must be finite and >= 0, the contact force and"
-                " the tangential spring and slip finite");
+                ": spring force, stiffness and overlap must be finite and >= 0, the contact and"
+                " damping forces and the tangential spring and slip finite");
     int image = PeriodicBox::kNoImage;
     try {
       image = PeriodicBox::imageCode(r.image);
@@ -153,6 +155,7 @@ void CollisionModel::setHistory(const std::vector<PairRecord>& records) {
           ContactState{r.contactTime, r.springForce, r.stiffness, r.overlap, r.contactForce,
                        r.tangentialSpring, r.tangentialSlip};
     }
+    if (r.dampingForce.squaredNorm() > 0) lastDamping_[key(r.first, r.second, image)] = r.dampingForce;
   }
 }
 
@@ -198,13 +201,23 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
   torque.assign(n, Vec3::Zero());
   recordDamping_ = recordDamping;
   if (recordDamping) damped_.clear();
-  // each body's contact forces of the last call, from the pairs' (restart-safe)
+  // each body's contact and damping forces of the last call, from the pairs'
+  // (restart-safe), summed in the order of the pairs' keys so that a model
+  // restored from its history sums them to the same bits
+  lastForces_.clear();
+  for (const auto& [k, c] : contact_) lastForces_.emplace_back(k, 0, c.force);
+  for (const auto& [k, f] : lastDamping_) lastForces_.emplace_back(k, 1, f);
+  std::sort(lastForces_.begin(), lastForces_.end(), [](const auto& x, const auto& y) {
+    return std::tie(std::get<0>(x), std::get<1>(x)) < std::tie(std::get<0>(y), std::get<1>(y));
+  });
   lastContactForce_.assign(n, Vec3::Zero());
-  for (const auto& [k, c] : contact_) {
+  lastDampingForce_.assign(n, Vec3::Zero());
+  for (const auto& [k, kind, f] : lastForces_) {
+    std::vector<Vec3>& sum = kind == 0 ? lastContactForce_ : lastDampingForce_;
     const int i = PairKey::first(k);
     const int j = PairKey::second(k);
-    if (i < n) lastContactForce_[i] -= c.force;
-    if (j >= 0 && j < n) lastContactForce_[j] += c.force;
+    if (i < n) sum[i] -= f;
+    if (j >= 0 && j < n) sum[j] += f;
   }
   const Lubrication& pairLubrication = pair_->lubrication();
   const Lubrication& wallLubrication = wall_->lubrication();
@@ -326,25 +339,34 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
 }
 
 Scalar CollisionModel::sustainedLoad(const std::vector<CollisionBody>& bodies, int i, int j,
-                                     const Vec3& n, const Vec3& ownForce) const {
-  // the acceleration of a body from everything but this pair's contact
-  // (ownForce: this pair's last force on the second body, minus on the first)
-  auto acceleration = [&](int b, const Vec3& own, Scalar& inverseMass) -> Vec3 {
+                                     const Vec3& n, const Vec3& ownContact,
+                                     const Vec3& ownDamping) const {
+  // the acceleration of a body from everything but this pair (own: this
+  // pair's last contact and damping forces on the second body, minus on the
+  // first), and the static force scale the load cannot exceed. A film's force
+  // is a load only while a load squeezes the film (a body creeping through
+  // it, held by it): it counts at most as much as the body's external and
+  // contact forces, so that an impact's film force, many times the weights,
+  // never stiffens a spring beyond what the sub-step resolves
+  Scalar bound = 0;
+  auto acceleration = [&](int b, Scalar sign, Scalar& inverseMass) -> Vec3 {
     if (b < 0 || !bodies[b].movable || !std::isfinite(bodies[b].mass)) {
       inverseMass = 0;
       return Vec3::Zero();
     }
     inverseMass = 1 / bodies[b].mass;
-    Vec3 f = bodies[b].externalForce;
-    f += lastContactForce_[b] - own;
-    return f * inverseMass;
+    const Vec3 contacts = lastContactForce_[b] - sign * ownContact;
+    const Vec3 films = lastDampingForce_[b] - sign * ownDamping;
+    const Scalar scale = bodies[b].externalForce.norm() + contacts.norm();
+    bound += scale + std::min(films.norm(), scale);
+    return (bodies[b].externalForce + contacts + films) * inverseMass;
   };
   Scalar w1 = 0, w2 = 0;
-  const Vec3 a1 = acceleration(i, -ownForce, w1);
-  const Vec3 a2 = acceleration(j, ownForce, w2);
+  const Vec3 a1 = acceleration(i, -1, w1);
+  const Vec3 a2 = acceleration(j, 1, w2);
   const Scalar pressing = (a1 - a2).dot(n);  // > 0: body 1 pushed towards body 2
   if (!(pressing > 0) || !(w1 + w2 > 0)) return 0;
-  return pressing / (w1 + w2);
+  return std::min(pressing / (w1 + w2), bound);
 }
 
 void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, int j, int image,
@@ -380,10 +402,12 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
     const Scalar wInv = inverseEffectiveMass(s1, s2, n);
     if (wInv > 0) {
       // the static load pressing the pair together: the bodies' external
-      // forces and the contact forces of their other pairs (the last call's,
-      // less this pair's own)
+      // forces and the contact and damping forces of their other pairs (the
+      // last call's, less this pair's own)
+      const auto damping = lastDamping_.find(k);
       const Scalar load =
-          sustainedLoad(bodies, i, j, n, known != contact_.end() ? c.force : Vec3::Zero());
+          sustainedLoad(bodies, i, j, n, known != contact_.end() ? c.force : Vec3::Zero(),
+                        damping != lastDamping_.end() ? damping->second : Vec3::Zero());
       const Scalar fn = model.contact().force(c, overlap, un, wInv, cap, load, statistics_.stiffened);
       Vec3 fContact = fn * n;
       model.friction().addForce(fn, n, relative, s1, s2, subDt, known != contact_.end() ? elapsed_ : 0,
@@ -441,6 +465,7 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
     DampedPair pair;
     pair.first = i;
     pair.second = j;
+    pair.key = key(i, j, image);
     pair.normal = n;
     pair.arm1 = s1.arm;
     pair.arm2 = s2.arm;
@@ -561,6 +586,7 @@ void CollisionModel::dampingForces(const std::vector<CollisionBody>& bodies,
           "dampingForces: sub-step " + std::to_string(subDt) + " must be > 0");
   force.assign(n, Vec3::Zero());
   torque.assign(n, Vec3::Zero());
+  lastDamping_.clear();
   if (damped_.empty()) return;
   bool films = false;
   for (const DampedPair& p : damped_) {
@@ -677,6 +703,8 @@ void CollisionModel::dampingForces(const std::vector<CollisionBody>& bodies,
   for (std::size_t k = 0; k < m; ++k) {
     const DampedPair& p = damped_[k];
     const Vec3 f2 = (impulse_[k] / subDt) * p.normal;
+    // (Eigen's default constructor leaves a new entry uninitialised)
+    if (f2.squaredNorm() > 0) lastDamping_.try_emplace(p.key, Vec3::Zero()).first->second += f2;
     force[p.first] -= f2;
     torque[p.first] -= p.arm1.cross(f2);
     if (p.second >= 0) {

@@ -21,6 +21,11 @@ void ContactParameters::validate() const {
     throw std::invalid_argument("contact: " + outOfRangeMessage("rollingFriction", rollingFriction,
                                                                 kRollingFrictionRange));
   }
+  if (!kSustainedLoadOverlapRange.contains(sustainedLoadOverlap)) {
+    throw std::invalid_argument("contact: " + outOfRangeMessage("sustainedLoadOverlap",
+                                                                sustainedLoadOverlap,
+                                                                kSustainedLoadOverlapRange));
+  }
   const auto& models = frictionModels();
   if (std::find(models.begin(), models.end(), frictionModel) == models.end()) {
     throw std::invalid_argument("contact: frictionModel '" + frictionModel +

@@ -15,7 +15,8 @@ const std::vector<std::string>& PairModel::names() {
 std::unique_ptr<PairModel> PairModel::New(const std::string& name,
                                           const InteractionParameters& parameters) {
   parameters.validate();
-  const SpringDashpotContact contact(parameters.contact.restitution);
+  const SpringDashpotContact contact(parameters.contact.restitution,
+                                     parameters.contact.sustainedLoadOverlap);
   std::unique_ptr<Friction> friction = makeFriction(parameters.contact);
   if (name == "springDashpot") {
     return std::make_unique<PairModel>(name, contact, std::move(friction),

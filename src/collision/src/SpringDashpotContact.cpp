@@ -6,9 +6,11 @@
 
 namespace collision {
 
-SpringDashpotContact::SpringDashpotContact(Scalar restitution) : restitution_(restitution) {
+SpringDashpotContact::SpringDashpotContact(Scalar restitution, Scalar sustainedLoadOverlap)
+    : restitution_(restitution), sustainedLoadOverlap_(sustainedLoadOverlap) {
   ContactParameters p;
   p.restitution = restitution;
+  p.sustainedLoadOverlap = sustainedLoadOverlap;
   p.validate();
 }
 
@@ -46,10 +48,10 @@ Scalar SpringDashpotContact::force(ContactState& c, Scalar overlap, Scalar un, S
   }
   // a sustained load (gravity, the flow, bodies above): a spring made for an
   // impact's contact time can be far too soft to carry it. The spring is
-  // stiffened so that the load overlaps it by at most half the cap:
-  // k >= 2 W/cap; the spring of an impact without a load is left alone
+  // stiffened so that the load overlaps it by at most the fraction f of the
+  // cap: k >= W/(f cap); the spring of an impact without a load is left alone
   if (load > 0) {
-    const Scalar needed = 2 * load / cap;
+    const Scalar needed = load / (sustainedLoadOverlap_ * cap);
     if (needed > law.stiffness) {
       const Scalar ratio = std::sqrt(needed / law.stiffness);
       law.stiffness = needed;

@@ -15,7 +15,8 @@ const std::vector<std::string>& WallModel::names() {
 std::unique_ptr<WallModel> WallModel::New(const std::string& name,
                                           const InteractionParameters& parameters) {
   parameters.validate();
-  const SpringDashpotContact contact(parameters.contact.restitution);
+  const SpringDashpotContact contact(parameters.contact.restitution,
+                                     parameters.contact.sustainedLoadOverlap);
   std::unique_ptr<Friction> friction = makeFriction(parameters.contact);
   if (name == "springDashpot") {
     return std::make_unique<WallModel>(name, contact, std::move(friction),

@@ -7,6 +7,7 @@ License
 
 #include "filmCorrection.H"
 #include "dictionaryChecks.H"
+#include "collision/FilmCorrection.hpp"
 #include "IOdictionary.H"
 #include "dimensionedScalar.H"
 #include "volMesh.H"
@@ -51,6 +52,7 @@ Foam::filmCorrection::filmCorrection
     fluidDensity_(fluidDensity),
     active_(false),
     filmGap_(0),
+    dampingScale_(1),
     cellSize_(smallestCellSize(mesh)),
     viscosity_(0)
 {
@@ -75,14 +77,17 @@ Foam::filmCorrection::filmCorrection
     }
     if (!active_)
     {
-        if (properties.found("filmGap"))
+        for (const word key : {"filmGap", "filmDampingScale"})
         {
-            entryError
-            (
-                properties, "filmGap",
-                "is used only with filmStabilisation yes (it is no here);"
-                " remove it"
-            );
+            if (properties.found(key))
+            {
+                entryError
+                (
+                    properties, key,
+                    "is used only with filmStabilisation yes (it is no here);"
+                    " remove it"
+                );
+            }
         }
         return;
     }
@@ -99,6 +104,12 @@ Foam::filmCorrection::filmCorrection
     {
         filmGap_ = cellSize_;
     }
+    dampingScale_ = readOptionalInRange<scalar>
+    (
+        properties, "filmDampingScale", dampingScale_,
+        collision::FilmCorrection::kDampingScaleRange,
+        "the factor on the film damping estimate D"
+    );
 }
 
 

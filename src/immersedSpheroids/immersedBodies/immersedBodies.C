@@ -37,6 +37,8 @@ const char* const UNameDefault = "U";
 
 //- eta/deltaT, the penalty time scale over the time step
 constexpr scalar penaltyRatioDefault = 1e-3;
+constexpr scalar softCellStepsDefault = 1;
+constexpr collision::Range softCellStepsRange{0, 100, true, false};
 constexpr collision::Range penaltyRatioRange{0, 1, true, false};
 
 //- Body sub-steps per fluid time step (the collision model may ask for more)
@@ -303,9 +305,10 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         wordList
         ({
             "fluidDensity", "U", "forcing", "penaltyRatio", "wallCellPenalty",
-            "contactCellPenalty", "subSteps",
+            "contactCellPenalty", "softCellSteps", "subSteps",
             "virtualMass", "bodies", "packing", "output", "collision",
-            "filmStabilisation", "filmGap", "viscosity", "meanFlow"
+            "filmStabilisation", "filmGap", "filmDampingScale", "viscosity",
+            "meanFlow"
         })
     );
     fluidDensity_ = readPositive
@@ -335,6 +338,25 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         "the penalty in the cells across a face from another body's cells"
         " (two bodies touching): soft, at most the fluid's own rate c/dt;"
         " stiff, 1/eta"
+    );
+    if
+    (
+        wallCells == wallCellPenaltyType::stiff
+     && contactCells == wallCellPenaltyType::stiff
+     && properties_.found("softCellSteps")
+    )
+    {
+        entryError
+        (
+            properties_, "softCellSteps",
+            "is used only with soft wall or contact cells (wallCellPenalty"
+            " and contactCellPenalty are stiff here); remove it"
+        );
+    }
+    const scalar softCellSteps = readOptionalInRange<scalar>
+    (
+        properties_, "softCellSteps", softCellStepsDefault, softCellStepsRange,
+        "the soft cells' penalty time scale over the fluid's own, dt/c,"
     );
     const label subSteps = readOptionalInRange<label>
     (
@@ -368,6 +390,7 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         (
             mesh, forcing, wallCells == wallCellPenaltyType::soft,
             contactCells == wallCellPenaltyType::soft,
+            softCellSteps,
             forcing == penaltyForcing::method::surfaceCorrected
           ? film.viscosity()/fluidDensity_
           : 0,
@@ -431,7 +454,12 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     }
     Info<< ", wall cells " << wallCellPenaltyNames[wallCells]
         << " (on patches " << fixedFlux << ")"
-        << ", contact cells " << wallCellPenaltyNames[contactCells]
+        << ", contact cells " << wallCellPenaltyNames[contactCells];
+    if (softCellSteps != softCellStepsDefault)
+    {
+        Info<< " (soft cells over " << softCellSteps << " steps)";
+    }
+    Info
         << ", periodic axes " << domain_.describe().c_str()
         << ", meanFlow "
         << meanFlowForcing::conditionNames[meanFlow_->active()

@@ -103,6 +103,7 @@ Foam::penaltyForcing::penaltyForcing
     const method forcing,
     const bool softWallCells,
     const bool softContactCells,
+    const scalar softCellSteps,
     const scalar nu,
     const periodicDomain& domain,
     const word& UName
@@ -112,6 +113,7 @@ Foam::penaltyForcing::penaltyForcing
     method_(forcing),
     softWallCells_(softWallCells),
     softContactCells_(softContactCells),
+    softCellSteps_(softCellSteps),
     wallCell_(mesh.nCells(), false),
     cellRadius_(immersedSpheroids::cellRadii(mesh)),
     domain_(domain),
@@ -267,7 +269,8 @@ void Foam::penaltyForcing::addSurfaceCorrectedTerms
     }
 
     const scalar maxCoeff = 1/eta;
-    const scalar maxWallCoeff = 1/max(eta, softWallCells_ ? dt/ddtCoeff : eta);
+    const scalar maxWallCoeff =
+        1/max(eta, softWallCells_ ? softCellSteps_*dt/ddtCoeff : eta);
     forAll(bodies, bodyi)
     {
         const immersedBody& body = bodies[bodyi];
@@ -335,7 +338,7 @@ void Foam::penaltyForcing::softenSharedCells
     {
         markContactZone();
     }
-    const scalar maxSharedCoeff = ddtCoeff/dt;
+    const scalar maxSharedCoeff = ddtCoeff/(softCellSteps_*dt);
     for (penaltyTerm& term : terms_)
     {
         if (termBody_[term.cell] == -2 && term.coeff > maxSharedCoeff)
@@ -411,8 +414,11 @@ Foam::scalar Foam::penaltyForcing::cellEta
     // pushes an approaching body off and sucks a receding one back
     // (measured in docs/immersedBodies.md, wall cells). There eta is at
     // least the fluid's own time scale dt/c (the strength of direct
-    // forcing): U_s is imposed over about a step
-    return softWallCells_ && wallCell_[celli] ? max(eta, dt/ddtCoeff) : eta;
+    // forcing; times softCellSteps): U_s is imposed over about a step
+    return
+        softWallCells_ && wallCell_[celli]
+      ? max(eta, softCellSteps_*dt/ddtCoeff)
+      : eta;
 }
 
 

@@ -171,6 +171,59 @@ void immersedBodiesTests::testBadInput(const Time& runTime, const fvMesh& mesh)
     );
     expectFatalIOError
     (
+        construct("softCellSteps 0; " + withBody(goodBody)),
+        {"'softCellSteps'", "(0, 100]", fname},
+        "softCellSteps out of (0, 100]"
+    );
+    expectFatalIOError
+    (
+        construct
+        (
+            "wallCellPenalty stiff; contactCellPenalty stiff; softCellSteps 2; "
+          + withBody(goodBody)
+        ),
+        {"'softCellSteps'", "soft wall or contact cells", fname},
+        "softCellSteps with stiff wall and contact cells"
+    );
+    expectFatalIOError
+    (
+        construct
+        (
+            "collision { type contact; } filmDampingScale 0; " + withBody(goodBody)
+        ),
+        {
+            "'filmDampingScale'",
+            collision::FilmCorrection::kDampingScaleRange.str(),
+            fname
+        },
+        "filmDampingScale out of range"
+    );
+    expectFatalIOError
+    (
+        construct
+        (
+            "collision { type contact; } filmStabilisation no;"
+            " filmDampingScale 2; " + withBody(goodBody)
+        ),
+        {"'filmDampingScale'", "filmStabilisation yes", fname},
+        "filmDampingScale without the film correction"
+    );
+    expectFatalIOError
+    (
+        construct
+        (
+            "collision { type contact; sustainedLoadOverlap 1.5; } "
+          + withBody(goodBody)
+        ),
+        {
+            "'sustainedLoadOverlap'",
+            collision::ContactParameters::kSustainedLoadOverlapRange.str(),
+            fname
+        },
+        "collision sustainedLoadOverlap out of range"
+    );
+    expectFatalIOError
+    (
         construct("contactCellPenalty firm; " + withBody(goodBody)),
         {"'contactCellPenalty'", "soft", "stiff", "firm", fname},
         "contactCellPenalty not soft or stiff"

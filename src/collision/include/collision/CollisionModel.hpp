@@ -54,6 +54,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -146,6 +147,8 @@ struct DampedPair {
   /// set by dampingForces(): the mean c over the sub-step's gap path, the
   /// coefficient the solve applied (-c_mean u_n(end))
   Scalar lubricationMean = 0;
+  /// the pair's key (the bodies and the image of the second)
+  std::uint64_t key = 0;
 };
 
 /// What the model remembers of one pair between calls (the restart state).
@@ -165,6 +168,9 @@ struct PairRecord {
   Scalar overlap = 0;
   /// the contact force on second in the last call (the load rule's other contacts)
   Vec3 contactForce = Vec3::Zero();
+  /// the damping force (lubrication and film correction) on second of the
+  /// last dampingForces() call (the load rule's other forces)
+  Vec3 dampingForce = Vec3::Zero();
   /// the tangential spring and the slip velocity of the last call
   /// (coulombSpring friction; ContactState)
   Vec3 tangentialSpring = Vec3::Zero();
@@ -295,9 +301,12 @@ class CollisionModel {
  private:
   /// The static load (N) pressing bodies i and j (j < 0: a wall) together
   /// along n (from i to j), from their external forces and their other
-  /// contacts; ownForce: this pair's last contact force on j
+  /// pairs' contact and damping forces, at most the sum over the two bodies
+  /// of their external and other contact forces and their other damping
+  /// forces, each of these at most the former (CollisionModel.cpp);
+  /// ownContact, ownDamping: this pair's last contact and damping forces on j
   Scalar sustainedLoad(const std::vector<CollisionBody>& bodies, int i, int j, const Vec3& n,
-                       const Vec3& ownForce) const;
+                       const Vec3& ownContact, const Vec3& ownDamping) const;
   static std::uint64_t key(int i, int j, int image = PeriodicBox::kNoImage) {
     return PairKey::encode(i, j, image);
   }
@@ -346,14 +355,21 @@ class CollisionModel {
   std::unordered_map<std::uint64_t, Vec3> direction_, nextDirection_;
   /// the state of each pair in contact
   std::unordered_map<std::uint64_t, ContactState> contact_, nextContact_;
+  /// the damping force on second of each damped pair in the last
+  /// dampingForces() call: a film that carries a body's load (a body resting
+  /// on another that creeps through its own film to a wall) is part of what
+  /// presses a contact of its pair's neighbours (sustainedLoad)
+  std::unordered_map<std::uint64_t, Vec3> lastDamping_;
   CollisionStatistics statistics_;
   bool recordDamping_ = true;
   /// the time the tangential springs advance over in this call (forces())
   Scalar elapsed_ = 0;
   std::vector<DampedPair> damped_;
-  /// each body's contact forces of the last call (the load of its other
-  /// contacts), summed from contact_ at the start of a call
-  std::vector<Vec3> lastContactForce_;
+  /// each body's contact and damping forces of the last call (the load of
+  /// its other pairs), summed from contact_ and lastDamping_ at the start of a call
+  std::vector<Vec3> lastContactForce_, lastDampingForce_;
+  /// forces() scratch: (pair key, 0 contact or 1 damping, force on second)
+  std::vector<std::tuple<std::uint64_t, int, Vec3>> lastForces_;
   std::vector<Scalar> impulse_;  ///< dampingForces(): the pairs' normal impulses
   std::vector<Scalar> pairInverseMass_, pairReferenceSpeed_;  ///< dampingForces() scratch
 };

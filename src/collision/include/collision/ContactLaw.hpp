@@ -49,6 +49,13 @@ struct ContactParameters {
   /// the rolling resistance torque is at most mu_r R_r |F_n| (RollingResistance)
   Scalar rollingFriction = 0;
   static constexpr Range kRollingFrictionRange{0, 1};
+  /// the static overlap a sustained load W may give a contact, over the
+  /// overlap cap: the spring is stiffened to k_n >= W/(fraction x cap), so
+  /// that an impact on a loaded contact still has the rest of the cap
+  /// (SpringDashpotContact). A rule, not a fit: docs/collisions.md gives
+  /// the results' sensitivity to it (validation/stabiliserSensitivity).
+  Scalar sustainedLoadOverlap = 0.5;
+  static constexpr Range kSustainedLoadOverlapRange{0, 1, true, false};
   static const std::vector<std::string>& frictionModels();
 
   /// @throws std::invalid_argument naming the parameter and its allowed range

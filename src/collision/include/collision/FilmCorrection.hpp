@@ -13,17 +13,21 @@
  * R the squeeze radius of the gap's paraboloid at the closest points
  * (GapParaboloid.hpp: for spheres the reduced radius, for a sphere and a wall
  * its radius), so that D is the leading squeeze-film damping at the gap
- * max(h, filmGap/4). Each body carries its film gap (CollisionBody::filmGap, 0: none);
- * a pair's is the larger of its bodies'.
+ * max(h, filmGap/4), times a scale s (default 1: the estimate; other values
+ * for the results' sensitivity to it, validation/stabiliserSensitivity).
+ * Each body carries its film gap (CollisionBody::filmGap, 0: none); a pair's
+ * is the larger of its bodies'.
  *
- * Usage: constructed by the caller with the viscosity mu > 0 [Pa s] and given
- * to CollisionModel (none: no film correction).
+ * Usage: constructed by the caller with the viscosity mu > 0 [Pa s] and the
+ * scale s in kDampingScaleRange, and given to CollisionModel (none: no film
+ * correction).
  *
  * See also: CollisionModel, docs/collisions.md.
  */
 #ifndef COLLISION_FILMCORRECTION_HPP
 #define COLLISION_FILMCORRECTION_HPP
 
+#include "collision/Range.hpp"
 #include "collision/Types.hpp"
 
 #include <algorithm>
@@ -32,10 +36,14 @@ namespace collision {
 
 class FilmCorrection {
  public:
-  /// @throws std::invalid_argument unless viscosity is finite and > 0
-  explicit FilmCorrection(Scalar viscosity);
+  static constexpr Range kDampingScaleRange{0, 100, true, false};
+
+  /// @throws std::invalid_argument unless viscosity is finite and > 0 and
+  /// dampingScale in kDampingScaleRange
+  explicit FilmCorrection(Scalar viscosity, Scalar dampingScale = 1);
 
   Scalar viscosity() const { return viscosity_; }
+  Scalar dampingScale() const { return dampingScale_; }
 
   /// The film gap of a pair from its bodies' (a wall has none: 0).
   static Scalar pairFilmGap(Scalar filmGap1, Scalar filmGap2) {
@@ -44,11 +52,12 @@ class FilmCorrection {
 
   /// D for the reduced radius r at the gap h below the pair's film gap.
   Scalar coefficient(Scalar r, Scalar gap, Scalar filmGap) const {
-    return 6 * kPi * viscosity_ * r * r / std::max(gap, Scalar(0.25) * filmGap);
+    return dampingScale_ * 6 * kPi * viscosity_ * r * r / std::max(gap, Scalar(0.25) * filmGap);
   }
 
  private:
   Scalar viscosity_;
+  Scalar dampingScale_;
 };
 
 }  // namespace collision

@@ -10,11 +10,12 @@
  * still approaching faster than the contact time was made for gets the
  * first touch's rule at its new speed for the overlap still allowed, and a
  * sustained load W pressing the pair together stiffens the spring to
- * k_n >= 2 W/cap (the static overlap at most half the cap).
+ * k_n >= W/(f cap) (the static overlap at most the fraction f of the cap,
+ * ContactParameters::sustainedLoadOverlap, default 1/2).
  *
  * Usage: restitution e is ContactParameters::restitution (default 0.97, in
- * kRestitutionRange); the cap (maxOverlap x the smallest semi-axis) and the
- * nominal T_c come from CollisionModel.
+ * kRestitutionRange), f its sustainedLoadOverlap; the cap (maxOverlap x the
+ * smallest semi-axis) and the nominal T_c come from CollisionModel.
  *
  * See also: PairModel, WallModel, CollisionModel; docs/collisions.md.
  */
@@ -41,10 +42,14 @@ struct ContactState {
 
 class SpringDashpotContact {
  public:
-  /// @throws std::invalid_argument if restitution is outside ContactParameters::kRestitutionRange
-  explicit SpringDashpotContact(Scalar restitution);
+  /// @throws std::invalid_argument if restitution or sustainedLoadOverlap is
+  /// outside its ContactParameters range
+  explicit SpringDashpotContact(
+      Scalar restitution,
+      Scalar sustainedLoadOverlap = ContactParameters().sustainedLoadOverlap);
 
   Scalar restitution() const { return restitution_; }
+  Scalar sustainedLoadOverlap() const { return sustainedLoadOverlap_; }
 
   /// The state of a first touch at normal speed un (< 0: approaching) with the nominal contact time.
   ContactState firstTouch(Scalar contactTime, Scalar un, Scalar cap) const;
@@ -64,6 +69,7 @@ class SpringDashpotContact {
 
  private:
   Scalar restitution_;
+  Scalar sustainedLoadOverlap_;
 };
 
 }  // namespace collision

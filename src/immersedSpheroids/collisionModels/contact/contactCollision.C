@@ -160,7 +160,7 @@ Foam::collisionModels::contact::contact
     wordList allowed
     ({
         "type", "walls", "restitution", "friction", "frictionModel",
-        "rollingFriction", "contactSteps",
+        "rollingFriction", "sustainedLoadOverlap", "contactSteps",
         "subStepsPerContact", "maxOverlap", "distanceAccuracy", "maxSubSteps",
         "distanceMethod", "pairModel", "wallModel"
     });
@@ -203,6 +203,12 @@ Foam::collisionModels::contact::contact
         dict, "rollingFriction", lawDefaults.contact.rollingFriction,
         Contact::kRollingFrictionRange,
         "the rolling friction coefficient mu_r (torque mu_r R_r |F_n|)"
+    );
+    p.contact.sustainedLoadOverlap = readOptionalInRange<scalar>
+    (
+        dict, "sustainedLoadOverlap", lawDefaults.contact.sustainedLoadOverlap,
+        Contact::kSustainedLoadOverlapRange,
+        "the static overlap of a sustained load over the overlap cap"
     );
     p.contact.frictionModel = readModelName
     (
@@ -297,7 +303,10 @@ Foam::collisionModels::contact::contact
                 collision::WallModel::New(wallName, p),
                 std::move(walls),
                 film.active()
-              ? std::make_unique<collision::FilmCorrection>(film.viscosity())
+              ? std::make_unique<collision::FilmCorrection>
+                (
+                    film.viscosity(), film.dampingScale()
+                )
               : nullptr
             )
         );
@@ -543,24 +552,26 @@ void Foam::collisionModels::contact::report(const label nSubSteps)
 void Foam::collisionModels::contact::readHistory(const dictionary& dict)
 {
     // (first second warm dx dy dz contactTime springForce stiffness overlap
-    // fx fy fz ix iy iz tx ty tz sx sy sz); i: the periodic image of second
-    // (multiples of the periods), t the tangential spring, s the slip
-    // velocity of its last call; a 16-entry record has neither (zero), a
-    // 13-entry one image 0 too, a 10-entry one no contact force either
-    // (zero), a 7-entry one starts the spring from k delta
+    // fx fy fz ix iy iz tx ty tz sx sy sz gx gy gz); i: the periodic image of
+    // second (multiples of the periods), t the tangential spring, s the slip
+    // velocity of its last call, g the damping force (lubrication and film)
+    // of the last call; a 22-entry record has no damping force (zero), a
+    // 16-entry one no spring and slip either, a 13-entry one image 0 too, a
+    // 10-entry one no contact force either (zero), a 7-entry one starts the
+    // spring from k delta
     const List<scalarList> records =
         immersedSpheroids::readCheckedOrDefault<List<scalarList>>
         (
             dict, "collisionPairs", List<scalarList>(),
             "a list of (first second warm dx dy dz contactTime springForce"
-            " stiffness overlap fx fy fz ix iy iz tx ty tz sx sy sz)"
+            " stiffness overlap fx fy fz ix iy iz tx ty tz sx sy sz gx gy gz)"
         );
     std::vector<collision::PairRecord> history;
     for (const scalarList& r : records)
     {
         if
         (
-            r.size() != 22 && r.size() != 16 && r.size() != 13
+            r.size() != 25 && r.size() != 22 && r.size() != 16 && r.size() != 13
          && r.size() != 10 && r.size() != 7
         )
         {
@@ -568,11 +579,12 @@ void Foam::collisionModels::contact::readHistory(const dictionary& dict)
             (
                 dict, "collisionPairs",
                 "a record has " + std::to_string(r.size()) + " entries; allowed:"
-                " 22 (first second warm dx dy dz contactTime springForce"
-                " stiffness overlap fx fy fz ix iy iz tx ty tz sx sy sz), 16"
-                " (without the tangential spring and slip), 13 (without the"
-                " image either), 10 (without the contact force either) or 7"
-                " (without the last fifteen)"
+                " 25 (first second warm dx dy dz contactTime springForce"
+                " stiffness overlap fx fy fz ix iy iz tx ty tz sx sy sz gx gy"
+                " gz), 22 (without the damping force), 16 (without the"
+                " tangential spring and slip either), 13 (without the image"
+                " either), 10 (without the contact force either) or 7"
+                " (without the last eighteen)"
             );
         }
         collision::PairRecord p;
@@ -598,10 +610,14 @@ void Foam::collisionModels::contact::readHistory(const dictionary& dict)
                 p.image[d] = int(std::lround(r[13 + d]));
             }
         }
-        if (r.size() == 22)
+        if (r.size() >= 22)
         {
             p.tangentialSpring = collision::Vec3(r[16], r[17], r[18]);
             p.tangentialSlip = collision::Vec3(r[19], r[20], r[21]);
+        }
+        if (r.size() == 25)
+        {
+            p.dampingForce = collision::Vec3(r[22], r[23], r[24]);
         }
         history.push_back(p);
     }
@@ -619,11 +635,11 @@ void Foam::collisionModels::contact::readHistory(const dictionary& dict)
 void Foam::collisionModels::contact::writeHistory(Ostream& os) const
 {
     const std::vector<collision::PairRecord> history = model_->history();
-    List<FixedList<scalar, 22>> records(label(history.size()));
+    List<FixedList<scalar, 25>> records(label(history.size()));
     forAll(records, i)
     {
         const collision::PairRecord& p = history[i];
-        records[i] = FixedList<scalar, 22>
+        records[i] = FixedList<scalar, 25>
         ({
             scalar(p.first), scalar(p.second), p.warm ? 1.0 : 0.0,
             p.direction.x(), p.direction.y(), p.direction.z(), p.contactTime,
@@ -632,7 +648,8 @@ void Foam::collisionModels::contact::writeHistory(Ostream& os) const
             scalar(p.image[0]), scalar(p.image[1]), scalar(p.image[2]),
             p.tangentialSpring.x(), p.tangentialSpring.y(),
             p.tangentialSpring.z(),
-            p.tangentialSlip.x(), p.tangentialSlip.y(), p.tangentialSlip.z()
+            p.tangentialSlip.x(), p.tangentialSlip.y(), p.tangentialSlip.z(),
+            p.dampingForce.x(), p.dampingForce.y(), p.dampingForce.z()
         });
     }
     os.writeEntry("collisionPairs", records);

@@ -1,0 +1,259 @@
+#!/usr/bin/python3
+"""The results' sensitivity to the coupling's and the contact's stabilisers, each set a factor 2
+below and above its default, one at a time (validation/stabiliserSensitivity).
+
+The stabilisers (docs/collisions.md, steps 6-7; docs/immersedBodies.md, wall cells):
+- filmDampingScale (top level, default 1): the factor on the film correction's estimate of the
+  resolved film's damping, D = 6 pi mu R*^2/max(h, filmGap/4);
+- sustainedLoadOverlap (collision, default 0.5): the static overlap a sustained load may give a
+  contact, over the overlap cap (the spring is stiffened to k >= W/(f cap)); 0.25 and 1;
+- softCellSteps (top level, default 1): the soft wall and contact cells' penalty time scale
+  over the fluid's own, dt/c.
+
+The cases, each the set-up of an existing test or validation, run in run/<case>-<variant>:
+- restingOnWall (tests/foam/restingOnWallCase): a light spheroid of the fluidised bed (Ar 2,
+  density ratio 2, oil of 0.07 Pa s) released lying flat 0.02 D above the floor at Courant 0.5:
+  the largest speed, the speed over the last 0.1 s and the overlap it rests at;
+- restingStack: the same with a second body released 0.02 D above the first, resting on it:
+  the same for the upper body, its rest gap to the lower one;
+- wetRebound St 27 and St 152 (validation/wetRebound at 8 cells/d): e/e_dry and the overlap;
+- wallCellPenalty (tests/foam/wallCellPenaltyCase, soft): a sphere driven 0.09 a into a wall
+  and out; the largest hydrodynamic force after the start over rho_f V U 2 pi f.
+
+    stabiliserSensitivity.py run [--case C ...] [--variant V ...] [--force]
+    stabiliserSensitivity.py plot      results/table.md, metrics.json, sensitivity.png
+
+Each run appends a row to results/runs.csv (its figures, CPU time, host, commit).
+"""
+import argparse
+import math
+import os
+import shutil
+import sys
+from pathlib import Path
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+TOP = str(Path(HERE).parents[1])
+sys.path.insert(0, os.path.join(TOP, "validation", "tools"))
+sys.path.insert(0, os.path.join(TOP, "validation", "wetRebound"))
+from validationTools import (cpu_seconds, provenance, read_csv, run_logged,  # noqa: E402
+                             substitute, substitute_re, write_csv)
+import wetRebound  # noqa: E402
+
+RESULTS = os.path.join(HERE, "results")
+RUNS = os.path.join(HERE, "run")
+RUNS_CSV = os.path.join(RESULTS, "runs.csv")
+
+# name: (keyword, value, where: "top" or "collision"); "default" sets nothing
+VARIANTS = {
+    "default": None,
+    "filmDampingScale0.5": ("filmDampingScale", 0.5, "top"),
+    "filmDampingScale2": ("filmDampingScale", 2, "top"),
+    "sustainedLoadOverlap0.25": ("sustainedLoadOverlap", 0.25, "collision"),
+    "sustainedLoadOverlap1": ("sustainedLoadOverlap", 1, "collision"),
+    "softCellSteps0.5": ("softCellSteps", 0.5, "top"),
+    "softCellSteps2": ("softCellSteps", 2, "top"),
+}
+KNOBS = {"filmDampingScale": 1, "sustainedLoadOverlap": 0.5, "softCellSteps": 1}
+CASES = ("restingOnWall", "restingStack", "wetReboundSt27", "wetReboundSt152", "wallCellPenalty")
+# per case: its figures (the first is its headline, whose change the metrics report) and units
+FIGURES = {
+    "restingOnWall": ("rest_overlap_b", "max_speed", "late_speed"),
+    "restingStack": ("upper_rest_gap_b", "max_speed", "late_speed"),
+    "wetReboundSt27": ("e_over_edry", "max_overlap_a"),
+    "wetReboundSt152": ("e_over_edry", "max_overlap_a"),
+    "wallCellPenalty": ("peak_force",),
+}
+UNITS = {"rest_overlap_b": "overlap at rest / b", "upper_rest_gap_b": "upper body's gap at rest / b",
+         "max_speed": "largest speed [m/s]", "late_speed": "speed over the last 0.1 s [m/s]",
+         "e_over_edry": "e/e_dry", "max_overlap_a": "largest overlap / a",
+         "peak_force": "largest F_z magnitude / (rho_f V U 2 pi f)"}
+FIELDS = ["name", "case", "variant", "figures", "cpu_s", "host", "date", "commit"]
+B = 0.0015874          # the resting bodies' smaller semi-axis (restingOnWallCase)
+
+
+def set_variant(props, variant):
+    """Put the variant's keyword into immersedBodiesProperties."""
+    if VARIANTS[variant] is None:
+        return
+    key, value, where = VARIANTS[variant]
+    if where == "top":
+        substitute(props, "\nbodies\n", f"\n{key:<16} {value:g};\n\nbodies\n")
+    else:
+        substitute_re(props, r"^(    type\s+lubricationContact;.*)$",
+                      lambda m: f"{m.group(1)}\n    {key:<16} {value:g};")
+
+
+def prepare(case, name, variant):
+    """The case folder, ready for ./Allrun; returns the properties file."""
+    shutil.rmtree(case, ignore_errors=True)
+    if name.startswith("wetRebound"):
+        wetRebound.write_case(case, name[len("wetRebound"):], 8)
+    else:
+        source = "restingOnWallCase" if name.startswith("resting") else "wallCellPenaltyCase"
+        shutil.copytree(os.path.join(TOP, "tests", "foam", source), case)
+    props = os.path.join(case, "constant", "immersedBodiesProperties")
+    if name == "restingStack":
+        upper = 0.0016674 + 2 * B + 0.02 * 2 * B
+        substitute(props, "\nbodies\n{\n", "\nbodies\n{\n" + f"""\
+    upper                                       // released 0.02 D above the lower body
+    {{
+        semiAxes        (0.0031748 0.0015874 0.0015874);
+        density         2000;
+        centre          (0.008 0.008 {upper:.7g});
+        axis            (1 0 0);
+        motion          {{ type free; }}
+    }}
+""")
+    set_variant(props, variant)
+    return props
+
+
+def analyse(case, name):
+    import h5py
+    import numpy as np
+    h5 = os.path.join(case, "postProcessing", "immersedBodies", "bodies.h5")
+    if name.startswith("wetRebound"):
+        r = wetRebound.analyse(h5, name[len("wetRebound"):])
+        return {"e_over_edry": r["e"] / wetRebound.E_DRY, "max_overlap_a": r["max_overlap_a"]}
+    with h5py.File(h5, "r", locking=False) as f:
+        names = [n.decode() if isinstance(n, bytes) else str(n) for n in f["bodyNames"][()]]
+        t = f["time"][()]
+        c = f["centre"][()]
+        v = f["velocity"][()]
+        fz = f["hydroForce"][:, 0, 2]
+    for x in (c, v):
+        if not np.all(np.isfinite(x)):
+            raise RuntimeError(f"{case}: non-finite body state")
+    if name == "wallCellPenalty":
+        scale = 1000 * 4 / 3 * math.pi * 0.002 ** 3 * 0.5 * 2 * math.pi * 416.6666666666667
+        return {"peak_force": float(np.abs(fz[3:]).max() / scale)}
+    speed = np.linalg.norm(v, axis=2).max(axis=1)
+    late = t >= t[-1] - 0.1
+    out = {"max_speed": float(speed.max()), "late_speed": float(speed[late].max())}
+    lower = names.index("body")
+    if name == "restingOnWall":
+        out["rest_overlap_b"] = float((B - c[-1, lower, 2]) / B)
+    else:
+        up = names.index("upper")
+        out["upper_rest_gap_b"] = float((c[-1, up, 2] - c[-1, lower, 2] - 2 * B) / B)
+    return out
+
+
+def run(name, variant, force):
+    tag = f"{name}-{variant}"
+    rows = read_csv(RUNS_CSV)
+    if not force and any(r["name"] == tag for r in rows):
+        print(f"{tag}: in results/runs.csv, skipped")
+        return
+    case = os.path.join(RUNS, tag)
+    prepare(case, name, variant)
+    if run_logged(["./Allrun"], case, "log.Allrun") != 0:
+        sys.exit(f"stabiliserSensitivity: {tag} failed (see {case}/log.*)")
+    figures = analyse(case, name)
+    print(f"{tag}: " + ", ".join(f"{k} {v:.4g}" for k, v in figures.items()), flush=True)
+    row = {"name": tag, "case": name, "variant": variant,
+           "figures": ";".join(f"{k}={v:.6g}" for k, v in figures.items()),
+           "cpu_s": f"{cpu_seconds(case, 'log.immersedSpheroidFoam'):.0f}", **provenance()}
+    os.makedirs(RESULTS, exist_ok=True)
+    rows = [r for r in read_csv(RUNS_CSV) if r["name"] != tag] + [row]
+    order = {(c, v): i for i, (c, v) in enumerate((c, v) for c in CASES for v in VARIANTS)}
+    write_csv(RUNS_CSV, sorted(rows, key=lambda r: order[(r["case"], r["variant"])]), FIELDS)
+
+
+def figures_of(rows):
+    """{(case, variant): {figure: value}} from results/runs.csv."""
+    out = {}
+    for r in rows:
+        out[(r["case"], r["variant"])] = {k: float(v) for k, v in
+                                         (kv.split("=") for kv in r["figures"].split(";"))}
+    return out
+
+
+def change_pct(value, reference):
+    return 100 * (value / reference - 1) if reference != 0 else float("nan")
+
+
+def plot():
+    rows = read_csv(RUNS_CSV, missing_ok=False)
+    data = figures_of(rows)
+    metrics, lines = {}, []
+    for case in CASES:
+        if (case, "default") not in data:
+            continue
+        base = data[(case, "default")]
+        lines += [f"**{case}**", "", "| variant | " + " | ".join(UNITS[f] for f in FIGURES[case])
+                  + f" | change of {UNITS[FIGURES[case][0]]} |",
+                  "|---|" + "---|" * (len(FIGURES[case]) + 1)]
+        for variant in VARIANTS:
+            if (case, variant) not in data:
+                continue
+            fig = data[(case, variant)]
+            head = FIGURES[case][0]
+            change = change_pct(fig[head], base[head])
+            lines.append(f"| {variant} | " + " | ".join(f"{fig[f]:.4g}" for f in FIGURES[case])
+                         + (" | - |" if variant == "default" else f" | {change:+.1f} % |"))
+            for f in FIGURES[case]:
+                metrics[f"{case}_{f}_{variant}"] = float(f"{fig[f]:.6g}")
+            if variant != "default":
+                key = f"{case}_{head}_max_abs_change_pct_{VARIANTS[variant][0]}"
+                metrics[key] = round(max(abs(change), metrics.get(key, 0.0)), 3)
+        lines.append("")
+    with open(os.path.join(RESULTS, "table.md"), "w") as f:
+        f.write("\n".join(lines))
+    import json
+    with open(os.path.join(RESULTS, "metrics.json"), "w") as f:
+        json.dump(metrics, f, indent=1, sort_keys=True)
+        f.write("\n")
+    figure(data)
+    print("\n".join(lines))
+
+
+def figure(data):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+    cases = [c for c in CASES if (c, "default") in data]
+    fig, axs = plt.subplots(1, len(cases), figsize=(3.2 * len(cases), 3.8), squeeze=False)
+    for ax, case in zip(axs[0], cases):
+        head = FIGURES[case][0]
+        base = data[(case, "default")][head]
+        names = [v for v in VARIANTS if v != "default" and (case, v) in data]
+        changes = [change_pct(data[(case, v)][head], base) for v in names]
+        ax.barh(np.arange(len(names)), changes, color=[f"C{list(KNOBS).index(VARIANTS[v][0])}"
+                                                       for v in names])
+        ax.set_yticks(np.arange(len(names)))
+        ax.set_yticklabels(names, fontsize=7)
+        ax.axvline(0, color="k", lw=0.8)
+        ax.set_title(f"{case}\n{UNITS[head]}: {base:.3g}", fontsize=8)
+        ax.set_xlabel("change against the default [%]", fontsize=8)
+        ax.grid(True, axis="x", alpha=0.3)
+    fig.suptitle("Each stabiliser a factor 2 below and above its default")
+    fig.tight_layout()
+    fig.savefig(os.path.join(RESULTS, "sensitivity.png"), dpi=120)
+    plt.close(fig)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    sub = ap.add_subparsers(dest="cmd", required=True)
+    r = sub.add_parser("run")
+    r.add_argument("--case", action="append", choices=CASES, default=[])
+    r.add_argument("--variant", action="append", choices=list(VARIANTS), default=[])
+    r.add_argument("--force", action="store_true")
+    sub.add_parser("plot")
+    a = ap.parse_args()
+    if a.cmd == "plot":
+        plot()
+        return
+    for case in a.case or CASES:
+        for variant in a.variant or VARIANTS:
+            if case == "wallCellPenalty" and variant != "default" and \
+                    VARIANTS[variant][0] != "softCellSteps":
+                continue        # a prescribed body: no film correction, no load
+            run(case, variant, a.force)
+
+
+if __name__ == "__main__":
+    main()

@@ -34,6 +34,7 @@ the paraboloid's force as the gap closes; rows in results/spheroidRuns.csv.
     lubricationResolution.py fit --cpd N  the resolved gap c (delta = c h_cell) that best
                                           completes that resolution's resolved forces
     lubricationResolution.py plot        results/table.md, metrics.json, force.png, sliding.png
+                                         (and movingApproach.py's table and figure)
 
 Each finished run appends a row to results/runs.csv (gap, forces, steadiness, CPU time, host,
 commit).
@@ -560,6 +561,11 @@ def do_plot():
         lines += ["", pair_table_and_figure(pairs)]
         metrics.update(error_metrics(pairs, "pair"))
         metrics.update(pair_fit(pairs))
+    import movingApproach
+    moving_table, moving_metrics = movingApproach.plot()
+    if moving_table:
+        lines += ["", moving_table]
+        metrics.update(moving_metrics)
     spheroids = read_csv(SPHEROID_CSV)
     if spheroids:
         lines += ["", spheroid_table_and_figure(spheroids, rows)]

@@ -264,9 +264,7 @@ TEST(ImplicitLubrication, ABodyLandingOnOneInAWallFilmRestsWithinTheCap) {
   // upper one brings to that contact is carried, through the lower body, by
   // the lower one's wall film: the contact's load rule must see it (the film
   // forces of the bodies' other pairs), else the spring made for the creeping
-  // touch is far too soft and the upper body sinks into the lower one (1.7
-  // times the cap without the film forces in the rule; 1.03 with them, a
-  // transient of the landing, and 0.39 at rest)
+  // touch is far too soft and the upper body sinks into the lower one
   const Scalar a = 2e-3, mu = 0.07, dt = 2e-4, contactTime = 2e-2;  // 100 sub-steps per contact
   const Vec3 g(0, 0, -9.81 * 0.5);
   const Scalar lower = a * 1.05, upper = lower + 2 * a * 1.01;

@@ -16,8 +16,8 @@ in which the gap closes is Re/2), and the flow has forgotten the start by 0.5 d 
 Each step's force along the motion, hydrodynamic plus collision (the correction as it runs in
 production), over 6 pi mu a U, is compared with the exact force averaged over the gap path of
 that step: the collision model gives the film's impulse integrated over the path (docs/
-collisions.md, step 6), so a step's force is the path's mean (at 1e-3 d and 8 cells/d the
-path's mean lies 14 % below the force at the step's end gap). The exact forces are Brenner
+collisions.md, step 6), so a step's force is the path's mean (at 1e-3 d and 8 cells/d a step
+closes a third of the gap, 3.1e-4 d, and the film force varies as 1/h over it). The exact forces are Brenner
 (1961) for the wall and Brenner's free-surface series for the pair (sphereWallStokes.py).
 
     movingApproach.py run --cpd N [--shape sphere|spherePair] [--force]

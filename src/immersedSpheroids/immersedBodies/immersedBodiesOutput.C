@@ -27,6 +27,8 @@ constexpr bool timeSeriesDefault = true;
 constexpr bool surfacesDefault = true;
 constexpr bool solidFractionDefault = false;
 constexpr label surfaceSubdivisionsDefault = 3;
+constexpr scalar timeSeriesIntervalDefault = 1;
+constexpr collision::Range timeStepIntervalRange{1, 1e9};
 constexpr collision::Range surfaceSubdivisionsRange
 {
     0, bodyoutput::kMaxSurfaceSubdivisions
@@ -45,7 +47,76 @@ std::array<double, 4> toArray(const quaternion& q)
 } // End anonymous namespace
 
 
+// * * * * * * * * * * * * * Static Member Data  * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::immersedBodiesOutput::seriesControl>
+Foam::immersedBodiesOutput::seriesControlNames
+({
+    { seriesControl::timeStep, "timeStep" },
+    { seriesControl::runTime, "runTime" },
+});
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::immersedBodiesOutput::seriesIndex
+(
+    const scalar t,
+    const scalar deltaT
+) const
+{
+    return std::floor((t + 0.5*deltaT)/seriesInterval_);
+}
+
+
+bool Foam::immersedBodiesOutput::rowDue(const Time& time)
+{
+    bool due = time.writeTime();
+    if (seriesControl_ == seriesControl::timeStep)
+    {
+        due = due || time.timeIndex() % label(seriesInterval_) == 0;
+    }
+    else
+    {
+        const scalar index = seriesIndex(time.value(), time.deltaTValue());
+        due = due || index > lastSeriesIndex_;
+        lastSeriesIndex_ = index;
+    }
+    return due;
+}
+
+
+void Foam::immersedBodiesOutput::writeRow(const scalar t)
+{
+    std::vector<bodyoutput::BodyRecord> records;
+    records.reserve(bodies_.bodies().size());
+    for (const immersedBody& body : bodies_.bodies())
+    {
+        const bodyState& s = body.state();
+        bodyoutput::BodyRecord r;
+        r.centre = toArray(s.centre);
+        r.velocity = toArray(s.velocity);
+        r.angularVelocity = toArray(s.angularVelocity);
+        r.orientation = toArray(s.orientation);
+        r.hydroForce = toArray(body.hydroForce());
+        r.hydroTorque = toArray(body.hydroTorque());
+        r.collisionForce = toArray(body.collisionForce());
+        r.collisionTorque = toArray(body.collisionTorque());
+        r.unwrappedCentre = toArray(body.unwrappedCentre());
+        records.push_back(r);
+    }
+    try
+    {
+        writer_->append(t, records);
+    }
+    catch (const std::exception& err)
+    {
+        FatalErrorInFunction
+            << "Cannot append to the time series of the bodies "
+            << writer_->path() << ": " << err.what() << nl << exit(FatalError);
+    }
+}
+
 
 void Foam::immersedBodiesOutput::writeSurfaces
 (
@@ -114,6 +185,9 @@ Foam::immersedBodiesOutput::immersedBodiesOutput
 :
     bodies_(bodies),
     timeSeries_(timeSeriesDefault),
+    seriesControl_(seriesControl::timeStep),
+    seriesInterval_(timeSeriesIntervalDefault),
+    lastSeriesIndex_(0),
     surfaces_(surfacesDefault),
     surfaceSubdivisions_(surfaceSubdivisionsDefault),
     solidFraction_(solidFractionDefault),
@@ -124,11 +198,40 @@ Foam::immersedBodiesOutput::immersedBodiesOutput
     checkKeywords
     (
         dict,
-        wordList({"timeSeries", "surfaces", "surfaceSubdivisions", "solidFraction"})
+        wordList
+        ({
+            "timeSeries", "timeSeriesControl", "timeSeriesInterval",
+            "surfaces", "surfaceSubdivisions", "solidFraction"
+        })
     );
     const string yesNo("yes or no (a switch)");
     timeSeries_ =
         readCheckedOrDefault<Switch>(dict, "timeSeries", timeSeriesDefault, yesNo);
+    seriesControl_ = readOptionalEnum
+    (
+        dict, "timeSeriesControl", seriesControlNames, seriesControl::timeStep,
+        "what sets the time series' interval: timeStep (timeSeriesInterval"
+        " steps) or runTime (timeSeriesInterval seconds)"
+    );
+    if (seriesControl_ == seriesControl::timeStep)
+    {
+        seriesInterval_ = readOptionalInRange<label>
+        (
+            dict, "timeSeriesInterval", label(timeSeriesIntervalDefault),
+            timeStepIntervalRange,
+            "the time steps between two rows of the time series"
+            " (timeSeriesControl timeStep), an integer"
+        );
+    }
+    else
+    {
+        seriesInterval_ = readPositive
+        (
+            dict, "timeSeriesInterval",
+            "the simulated time between two rows of the time series [s]"
+            " (timeSeriesControl runTime), > 0"
+        );
+    }
     surfaces_ =
         readCheckedOrDefault<Switch>(dict, "surfaces", surfacesDefault, yesNo);
     solidFraction_ = readCheckedOrDefault<Switch>
@@ -186,7 +289,9 @@ void Foam::immersedBodiesOutput::start(const scalar t0)
                 << "Cannot open the time series of the bodies " << file
                 << ": " << err.what() << nl << exit(FatalError);
         }
-        append(t0);
+        writeRow(t0);
+        lastSeriesIndex_ =
+            seriesIndex(t0, bodies_.mesh().time().deltaTValue());
     }
 
     if (surfaces_)
@@ -211,39 +316,16 @@ void Foam::immersedBodiesOutput::start(const scalar t0)
 }
 
 
-void Foam::immersedBodiesOutput::append(const scalar t)
+void Foam::immersedBodiesOutput::append()
 {
     if (!writer_)
     {
         return;
     }
-
-    std::vector<bodyoutput::BodyRecord> records;
-    records.reserve(bodies_.bodies().size());
-    for (const immersedBody& body : bodies_.bodies())
+    const Time& time = bodies_.mesh().time();
+    if (rowDue(time))
     {
-        const bodyState& s = body.state();
-        bodyoutput::BodyRecord r;
-        r.centre = toArray(s.centre);
-        r.velocity = toArray(s.velocity);
-        r.angularVelocity = toArray(s.angularVelocity);
-        r.orientation = toArray(s.orientation);
-        r.hydroForce = toArray(body.hydroForce());
-        r.hydroTorque = toArray(body.hydroTorque());
-        r.collisionForce = toArray(body.collisionForce());
-        r.collisionTorque = toArray(body.collisionTorque());
-        r.unwrappedCentre = toArray(body.unwrappedCentre());
-        records.push_back(r);
-    }
-    try
-    {
-        writer_->append(t, records);
-    }
-    catch (const std::exception& err)
-    {
-        FatalErrorInFunction
-            << "Cannot append to the time series of the bodies "
-            << writer_->path() << ": " << err.what() << nl << exit(FatalError);
+        writeRow(time.value());
     }
 }
 

@@ -495,7 +495,8 @@ void immersedBodiesTests::testBadInput(const Time& runTime, const fvMesh& mesh)
             constructRaw
             (
                 "fluidDensity 1000; bodies { b1 { " + goodBody + " } }"
-                " output { timeSeries no; surfaces no; surfaceSubdivisions 3;"
+                " output { timeSeries no; timeSeriesControl timeStep;"
+                " timeSeriesInterval 2; surfaces no; surfaceSubdivisions 3;"
                 " solidFraction no; }"
             )();
         }
@@ -520,6 +521,57 @@ void immersedBodiesTests::testBadInput(const Time& runTime, const fvMesh& mesh)
         ),
         {"'surfaceSubdivisions'", "[0, 8]", fname},
         "output surfaceSubdivisions out of range"
+    );
+    expectFatalIOError
+    (
+        construct
+        (
+            "fluidDensity 1000; bodies { b1 { " + goodBody + " } }"
+            " output { timeSeries no; surfaces no; timeSeriesInterval 0; }"
+        ),
+        {"'timeSeriesInterval'", "[1, 1e+09]", "an integer", fname},
+        "output timeSeriesInterval (steps) out of range"
+    );
+    expectFatalIOError
+    (
+        construct
+        (
+            "fluidDensity 1000; bodies { b1 { " + goodBody + " } }"
+            " output { timeSeries no; surfaces no; timeSeriesInterval 2.5; }"
+        ),
+        {"timeSeriesInterval", fname},
+        "output timeSeriesInterval (steps) not an integer"
+    );
+    expectFatalIOError
+    (
+        construct
+        (
+            "fluidDensity 1000; bodies { b1 { " + goodBody + " } }"
+            " output { timeSeries no; surfaces no; timeSeriesControl everyStep; }"
+        ),
+        {"'timeSeriesControl'", "everyStep", "timeStep", "runTime", fname},
+        "output timeSeriesControl not a control"
+    );
+    expectFatalIOError
+    (
+        construct
+        (
+            "fluidDensity 1000; bodies { b1 { " + goodBody + " } }"
+            " output { timeSeries no; surfaces no; timeSeriesControl runTime; }"
+        ),
+        {"'timeSeriesInterval'", "missing", "(timeSeriesControl runTime)", fname},
+        "output timeSeriesControl runTime without an interval"
+    );
+    expectFatalIOError
+    (
+        construct
+        (
+            "fluidDensity 1000; bodies { b1 { " + goodBody + " } }"
+            " output { timeSeries no; surfaces no; timeSeriesControl runTime;"
+            " timeSeriesInterval -0.1; }"
+        ),
+        {"'timeSeriesInterval'", "-0.1", "> 0", fname},
+        "output timeSeriesInterval (time) out of range"
     );
     expectFatalIOError
     (

@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "immersedBodies.H"
+#include "StringStream.H"
 #include "processCpuTime.H"
 #include "dictionaryChecks.H"
 #include "packingBodies.H"
@@ -164,30 +165,11 @@ void Foam::immersedBodies::readBodies()
 
 bool Foam::immersedBodies::readRestartState()
 {
-    // the state file on every rank or on none
-    boolList found(Pstream::nProcs(), false);
-    found[Pstream::myProcNo()] = headerOk();
-    Pstream::listCombineGather(found, orEqOp<bool>());
-    Pstream::listCombineScatter(found);
-    if (found.found(true) && found.found(false))
-    {
-        labelList missing;
-        forAll(found, proci)
-        {
-            if (!found[proci])
-            {
-                missing.append(proci);
-            }
-        }
-        FatalErrorInFunction
-            << "The restart state " << objectPath() << " is missing in the"
-            << " processor directories of rank(s) " << missing << " but present"
-            << " in the others: the ranks would restart different bodies."
-            << " Restart from a time that every processor directory holds"
-            << " (or reconstruct and decompose the case again)" << nl
-            << exit(FatalError);
-    }
-    if (!found[Pstream::myProcNo()])
+    // the master's copy of the state (writeObject writes only that one),
+    // sent to every rank: any decomposition restarts from the same state
+    bool found = Pstream::master() && headerOk();
+    Pstream::scatter(found);
+    if (!found)
     {
         // a fresh start, unless the run continues from a later time than
         // the first of the case: then the bodies' state is lost
@@ -212,8 +194,22 @@ bool Foam::immersedBodies::readRestartState()
         return false;
     }
 
-    const dictionary dict(readStream(typeName));
-    close();
+    // sent as text and parsed on each rank (ASCII, as written: a dictionary
+    // sent in the binary Pstream format cannot read back its lists)
+    string text;
+    fileName path(objectPath());
+    if (Pstream::master())
+    {
+        OStringStream os;
+        os << dictionary(readStream(typeName));
+        close();
+        text = os.str();
+    }
+    Pstream::scatter(text);
+    Pstream::scatter(path);
+    IStringStream is(text);
+    dictionary dict(is);
+    dict.name() = path;  // the messages name the file on every rank
 
     using namespace immersedSpheroids;
     restartEta_ = readCheckedOrDefault<scalar>
@@ -537,7 +533,7 @@ void Foam::immersedBodies::update(const volVectorField& U)
     lastDeltaT_ = dt;
     updateIndex_ = time.timeIndex();
 
-    output_->append(time.value());
+    output_->append();
 
     // the module's cost: this update, and the penalty terms of the last step
     const scalar lastPenaltyCpu = forcing_->cpu();

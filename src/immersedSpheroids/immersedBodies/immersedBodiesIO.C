@@ -46,6 +46,15 @@ bool Foam::immersedBodies::writeObject
 {
     output_->write();
 
+    // every rank holds the same state: the master writes it once (in
+    // processor0/ when decomposed, which reconstructPar carries to the case
+    // and decomposePar to every processor directory; readRestartState reads
+    // the master's copy)
+    if (Pstream::parRun() && !Pstream::master())
+    {
+        return true;
+    }
+
     // always ASCII, uncompressed: small, readable, exact at 17 digits
     return regIOobject::writeObject
     (

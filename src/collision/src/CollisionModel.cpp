@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -84,6 +85,15 @@ void CollisionModel::clearHistory() {
   direction_.clear();
   contact_.clear();
   lastDamping_.clear();
+  lastContactValid_ = false;
+}
+
+void CollisionModel::setWorkShare(std::shared_ptr<const WorkShare> share) {
+  require(!share || share->size() >= 1, "collision: a work share needs at least one process");
+  share_ = std::move(share);
+  for (auto it = direction_.begin(); it != direction_.end();) it = owns(it->first) ? std::next(it) : direction_.erase(it);
+  for (auto it = contact_.begin(); it != contact_.end();) it = owns(it->first) ? std::next(it) : contact_.erase(it);
+  lastContactValid_ = false;
 }
 
 std::vector<PairRecord> CollisionModel::history() const {
@@ -110,7 +120,11 @@ std::vector<PairRecord> CollisionModel::history() const {
     r.tangentialSpring = c.tangentialSpring;
     r.tangentialSlip = c.tangentialSlip;
   }
-  for (const auto& [k, f] : lastDamping_) record(k).dampingForce = f;
+  // every process holds every damping force (the solve is replicated); each
+  // reports its own pairs'
+  for (const auto& [k, f] : lastDamping_) {
+    if (owns(k)) record(k).dampingForce = f;
+  }
   std::vector<PairRecord> out;
   out.reserve(merged.size());
   for (const auto& kv : merged) out.push_back(kv.second);
@@ -149,13 +163,14 @@ void CollisionModel::setHistory(const std::vector<PairRecord>& records) {
     }
     require(r.second >= 0 || image == PeriodicBox::kNoImage,
             "pair history " + pair + ": a wall pair has no periodic image");
-    if (r.warm) direction_[key(r.first, r.second, image)] = r.direction;
-    if (r.contactTime > 0) {
-      contact_[key(r.first, r.second, image)] =
+    const std::uint64_t k = key(r.first, r.second, image);
+    if (r.warm && owns(k)) direction_[k] = r.direction;
+    if (r.contactTime > 0 && owns(k)) {
+      contact_[k] =
           ContactState{r.contactTime, r.springForce, r.stiffness, r.overlap, r.contactForce,
                        r.tangentialSpring, r.tangentialSlip};
     }
-    if (r.dampingForce.squaredNorm() > 0) lastDamping_[key(r.first, r.second, image)] = r.dampingForce;
+    if (r.dampingForce.squaredNorm() > 0) lastDamping_[k] = r.dampingForce;
   }
 }
 
@@ -181,6 +196,7 @@ int CollisionModel::subSteps(const std::vector<CollisionBody>& bodies, Scalar dt
   if (vRel > 0) tc = std::min(tc, kPi * settings_.maxOverlap * aMin / vRel);
   // the contacts under way keep the contact time they started with
   for (const auto& kv : contact_) tc = std::min(tc, kv.second.contactTime);
+  if (share_) tc = share_->minimum(tc);  // the other processes' contacts
   const Scalar n = std::ceil(dt * settings_.subStepsPerContact / tc - 1e-9);
   if (!(n <= settings_.maxSubSteps)) {
     throw std::runtime_error("collision: " + std::to_string(n) +
@@ -201,23 +217,28 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
   torque.assign(n, Vec3::Zero());
   recordDamping_ = recordDamping;
   if (recordDamping) damped_.clear();
-  // each body's contact and damping forces of the last call, from the pairs'
-  // (restart-safe), summed in the order of the pairs' keys so that a model
-  // restored from its history sums them to the same bits
-  lastForces_.clear();
-  for (const auto& [k, c] : contact_) lastForces_.emplace_back(k, 0, c.force);
-  for (const auto& [k, f] : lastDamping_) lastForces_.emplace_back(k, 1, f);
-  std::sort(lastForces_.begin(), lastForces_.end(), [](const auto& x, const auto& y) {
-    return std::tie(std::get<0>(x), std::get<1>(x)) < std::tie(std::get<0>(y), std::get<1>(y));
-  });
-  lastContactForce_.assign(n, Vec3::Zero());
+  // each body's damping forces of the last solve (every process holds them),
+  // summed in the order of the pairs' keys so that a model restored from its
+  // history sums them to the same bits; its contact forces of the last call,
+  // kept from that call's collective (or summed afresh after a restore)
+  lastForces_.assign(lastDamping_.begin(), lastDamping_.end());
+  std::sort(lastForces_.begin(), lastForces_.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
   lastDampingForce_.assign(n, Vec3::Zero());
-  for (const auto& [k, kind, f] : lastForces_) {
-    std::vector<Vec3>& sum = kind == 0 ? lastContactForce_ : lastDampingForce_;
+  for (const auto& [k, f] : lastForces_) {
     const int i = PairKey::first(k);
     const int j = PairKey::second(k);
-    if (i < n) sum[i] -= f;
-    if (j >= 0 && j < n) sum[j] += f;
+    if (i < n) lastDampingForce_[i] -= f;
+    if (j >= 0 && j < n) lastDampingForce_[j] += f;
+  }
+  if (!lastContactValid_ || static_cast<int>(lastContactForce_.size()) != n) {
+    contactSums(n, lastContactForce_);
+    if (share_) {
+      contactScratch_.assign(n, Vec3::Zero());
+      std::vector<Vec3> none(n, Vec3::Zero());
+      combine(contactScratch_, none, lastContactForce_, false);
+    }
+    lastContactValid_ = true;
   }
   const Lubrication& pairLubrication = pair_->lubrication();
   const Lubrication& wallLubrication = wall_->lubrication();
@@ -254,6 +275,7 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
   for (const CandidatePair& candidate : pairs) {
     const int i = candidate.first, j = candidate.second;
     if (!bodies[i].movable && !bodies[j].movable) continue;
+    if (!owns(key(i, j, candidate.image))) continue;
     // body j through its image (a copy only for a shifted image)
     const bool shifted = candidate.image != PeriodicBox::kNoImage;
     const Vec3 shift = shifted ? box_.shift(candidate.image) : Vec3::Zero();
@@ -310,6 +332,7 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
   for (int i = 0; i < n; ++i) {
     if (!bodies[i].movable) continue;
     for (int w = 0; w < static_cast<int>(walls_.size()); ++w) {
+      if (!owns(key(i, -1 - w))) continue;
       const WallDistance d = wallDistance(bodies[i].shape, walls_[w]);
       // (a body that may reach the activation gap within the sub-step too)
       const Scalar lubricationReach =
@@ -331,11 +354,100 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
 
   direction_.swap(nextDirection_);
   contact_.swap(nextContact_);
+  // the contact sums of the next call's load rule, with this call's forces
+  // in the one collective of the call
+  contactSums(n, lastContactForce_);
+  if (share_) combine(force, torque, lastContactForce_, recordDamping);
+  lastContactValid_ = true;
+  if (recordDamping) {
+    // the damping solve sweeps the pairs in the order of their keys, on
+    // every process alike
+    std::sort(damped_.begin(), damped_.end(),
+              [](const DampedPair& a, const DampedPair& b) { return a.key < b.key; });
+  }
   for (int i = 0; i < n; ++i) {
     if (!force[i].allFinite() || !torque[i].allFinite()) {
       throw std::runtime_error("collision: non-finite collision force on body " + std::to_string(i));
     }
   }
+}
+
+void CollisionModel::contactSums(int n, std::vector<Vec3>& sums) const {
+  std::vector<std::pair<std::uint64_t, Vec3>> forces;
+  forces.reserve(contact_.size());
+  for (const auto& [k, c] : contact_) forces.emplace_back(k, c.force);
+  std::sort(forces.begin(), forces.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  sums.assign(n, Vec3::Zero());
+  for (const auto& [k, f] : forces) {
+    const int i = PairKey::first(k);
+    const int j = PairKey::second(k);
+    if (i < n) sums[i] -= f;
+    if (j >= 0 && j < n) sums[j] += f;
+  }
+}
+
+namespace {
+
+template <class T>
+void put(std::vector<char>& out, const T& value) {
+  const char* p = reinterpret_cast<const char*>(&value);
+  out.insert(out.end(), p, p + sizeof(T));
+}
+
+template <class T>
+T take(const std::vector<char>& in, std::size_t& at) {
+  if (at + sizeof(T) > in.size()) throw std::runtime_error("collision: a process sent a short record");
+  T value;
+  std::memcpy(reinterpret_cast<char*>(&value), in.data() + at, sizeof(T));
+  at += sizeof(T);
+  return value;
+}
+
+}  // namespace
+
+void CollisionModel::combine(std::vector<Vec3>& force, std::vector<Vec3>& torque,
+                             std::vector<Vec3>& sums, bool withDamped) {
+  const int n = static_cast<int>(force.size());
+  // this process's block: the bodies it touched (index, force, torque,
+  // contact sum), then its damped pairs (numbers only: copied as bytes)
+  std::vector<char>& out = sendScratch_;
+  out.clear();
+  std::int64_t touched = 0;
+  for (int i = 0; i < n; ++i) {
+    touched += !(force[i].isZero(0) && torque[i].isZero(0) && sums[i].isZero(0));
+  }
+  put(out, touched);
+  put(out, static_cast<std::int64_t>(withDamped ? damped_.size() : 0));
+  for (int i = 0; i < n; ++i) {
+    if (force[i].isZero(0) && torque[i].isZero(0) && sums[i].isZero(0)) continue;
+    put(out, static_cast<std::int32_t>(i));
+    for (const Vec3* v : {&force[i], &torque[i], &sums[i]}) {
+      for (int c = 0; c < 3; ++c) put(out, (*v)[c]);
+    }
+  }
+  if (withDamped) {
+    for (const DampedPair& p : damped_) put(out, p);
+  }
+
+  const std::vector<char> all = share_->allGather(out);
+  force.assign(n, Vec3::Zero());
+  torque.assign(n, Vec3::Zero());
+  sums.assign(n, Vec3::Zero());
+  if (withDamped) damped_.clear();
+  std::size_t at = 0;
+  for (int process = 0; process < share_->size(); ++process) {
+    const std::int64_t bodies = take<std::int64_t>(all, at);
+    const std::int64_t pairs = take<std::int64_t>(all, at);
+    for (std::int64_t b = 0; b < bodies; ++b) {
+      const int i = take<std::int32_t>(all, at);
+      if (i < 0 || i >= n) throw std::runtime_error("collision: a process sent body " + std::to_string(i));
+      for (std::vector<Vec3>* v : {&force, &torque, &sums}) {
+        for (int c = 0; c < 3; ++c) (*v)[i][c] += take<Scalar>(all, at);
+      }
+    }
+    for (std::int64_t k = 0; k < pairs; ++k) damped_.push_back(take<DampedPair>(all, at));
+  }
+  if (at != all.size()) throw std::runtime_error("collision: the processes' records do not add up");
 }
 
 Scalar CollisionModel::sustainedLoad(const std::vector<CollisionBody>& bodies, int i, int j,

@@ -45,11 +45,13 @@ bool Foam::immersedBodies::writeObject
 ) const
 {
     output_->write();
+    integrator_->collision().collectHistory();
 
-    // every rank holds the same state: the master writes it once (in
-    // processor0/ when decomposed, which reconstructPar carries to the case
-    // and decomposePar to every processor directory; readRestartState reads
-    // the master's copy)
+    // every rank holds the same bodies (and the pair history of the pairs
+    // it owns, gathered on the master above): the master writes the state
+    // once (in processor0/ when decomposed, which reconstructPar carries to
+    // the case and decomposePar to every processor directory;
+    // readRestartState reads the master's copy)
     if (Pstream::parRun() && !Pstream::master())
     {
         return true;

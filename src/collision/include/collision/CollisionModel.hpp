@@ -21,6 +21,11 @@
  *     if given) recorded as damped pairs, applied implicitly by dampingForces();
  *  5. walls: the wall model (WallModel) against exact spheroid-plane distances.
  * SubStepper takes each body sub-step through forces() and dampingForces().
+ * In a parallel run (setWorkShare) each process computes steps 2-5 for the
+ * pairs it owns and keeps their histories; one collective per call gives every
+ * process the summed forces, the load sums of the next call and the damped
+ * pairs (sorted by key), so that the damping solve and the bodies' motion are
+ * the same on every process.
  * The laws and their constants: docs/collisions.md. A distance that does
  * not converge is counted in statistics() (the last iterate is used); a
  * non-finite force throws.
@@ -46,6 +51,7 @@
 #include "collision/PeriodicBox.hpp"
 #include "collision/PlaneWall.hpp"
 #include "collision/WallModel.hpp"
+#include "collision/WorkShare.hpp"
 #include "ellipsoids/AutoDistance.hpp"
 #include "ellipsoids/DualNewton.hpp"
 #include "ellipsoids/Ellipsoid.hpp"
@@ -200,6 +206,11 @@ class CollisionModel {
   /// minimum image (none by default; walls are unaffected).
   const PeriodicBox& periodicBox() const { return box_; }
   void setPeriodicBox(const PeriodicBox& box) { box_ = box; }
+  /// Share the pairs among the processes of a parallel run (nullptr: this
+  /// process does all). The histories of pairs another process owns are
+  /// dropped; every process must set the same share before its first call.
+  void setWorkShare(std::shared_ptr<const WorkShare> share);
+  const WorkShare* workShare() const { return share_.get(); }
 
   /**
    * Sub-steps a fluid step dt needs (>= 1): dt/subSteps <= T_c,min/subStepsPerContact
@@ -272,13 +283,17 @@ class CollisionModel {
   /// Forget the warm starts and contact histories (e.g. after bodies were moved by hand).
   void clearHistory();
 
-  /// The pairs' warm starts and contact times, sorted by (first, second).
+  /// The pairs' warm starts and contact times, sorted by (first, second):
+  /// with a work share, those of the pairs this process owns (the union over
+  /// the processes is the model's history).
   std::vector<PairRecord> history() const;
-  /// Restore history() (e.g. on restart).
+  /// Restore history() (e.g. on restart); with a work share, every process
+  /// is given the whole history and keeps its own pairs'.
   /// @throws std::invalid_argument on a record with bad indices or values
   void setHistory(const std::vector<PairRecord>& records);
 
-  /// Pairs in contact now (body-body and body-wall; walls are -1 - wall index).
+  /// Pairs in contact now (body-body and body-wall; walls are -1 - wall index),
+  /// of those this process owns.
   std::size_t activeContacts() const { return contact_.size(); }
 
   /// A pair that overlaps: bodies first and second (-1 - wall index for a
@@ -310,6 +325,16 @@ class CollisionModel {
   static std::uint64_t key(int i, int j, int image = PeriodicBox::kNoImage) {
     return PairKey::encode(i, j, image);
   }
+  /// does this process compute the pair (always without a work share)?
+  bool owns(std::uint64_t k) const { return !share_ || share_->owns(k); }
+  /// each body's contact force of this process's pairs in contact_ (the
+  /// force on second, minus on first), summed in the order of the keys
+  void contactSums(int n, std::vector<Vec3>& sums) const;
+  /// Every process's partial forces, torques and contact sums added (in
+  /// process order, the same bits on every process) and, with withDamped,
+  /// the damped pairs of every process concatenated: one collective
+  void combine(std::vector<Vec3>& force, std::vector<Vec3>& torque, std::vector<Vec3>& sums,
+               bool withDamped);
   /// the lubrication coefficient of a damped pair at the gap h, and its
   /// integral over the gap from h0 to h1
   /// The logarithmic tangential lubrication terms of a pair (j < 0: a wall)
@@ -340,6 +365,7 @@ class CollisionModel {
   std::vector<PlaneWall> walls_;
   PairSearch search_;
   PeriodicBox box_;
+  std::shared_ptr<const WorkShare> share_;
   /// the settings' distanceMethod
   std::unique_ptr<ellipsoids::DistanceMethod> distance_;
   /// the penetration depth of overlapping pairs, whatever distance_ is
@@ -366,10 +392,15 @@ class CollisionModel {
   Scalar elapsed_ = 0;
   std::vector<DampedPair> damped_;
   /// each body's contact and damping forces of the last call (the load of
-  /// its other pairs), summed from contact_ and lastDamping_ at the start of a call
+  /// its other pairs): the contact sums over every process's contact_ (kept
+  /// from the last call's collective, recomputed when lastContactValid_ is
+  /// false), the damping sums from lastDamping_ at the start of a call
   std::vector<Vec3> lastContactForce_, lastDampingForce_;
-  /// forces() scratch: (pair key, 0 contact or 1 damping, force on second)
-  std::vector<std::tuple<std::uint64_t, int, Vec3>> lastForces_;
+  bool lastContactValid_ = false;
+  /// forces() scratch: (pair key, force on second), sorted by key
+  std::vector<std::pair<std::uint64_t, Vec3>> lastForces_;
+  std::vector<Vec3> contactScratch_;
+  std::vector<char> sendScratch_;
   std::vector<Scalar> impulse_;  ///< dampingForces(): the pairs' normal impulses
   std::vector<Scalar> pairInverseMass_, pairReferenceSpeed_;  ///< dampingForces() scratch
 };

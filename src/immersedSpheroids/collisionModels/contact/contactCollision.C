@@ -6,6 +6,10 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "contactCollision.H"
+#include "pstreamWorkShare.H"
+
+#include <algorithm>
+#include <tuple>
 #include "immersedBody.H"
 #include "coreConversions.H"
 #include "collision/BodySet.hpp"
@@ -329,6 +333,12 @@ Foam::collisionModels::contact::contact
             {domain.periodic(0), domain.periodic(1), domain.periodic(2)}
         )
     );
+    // in a parallel run each rank computes the pairs it owns (the core's
+    // collectives combine them)
+    if (Pstream::parRun())
+    {
+        model_->setWorkShare(std::make_shared<pstreamWorkShare>());
+    }
 
     Info<< "immersedBodies: collision model " << dict.get<word>("type")
         << ": pair model " << pairName << ", wall model " << wallName
@@ -493,26 +503,42 @@ void Foam::collisionModels::contact::checkOverlaps
 
 void Foam::collisionModels::contact::report(const label nSubSteps)
 {
+    // each rank's counts are of the pairs it owns (summed here); the
+    // candidate pairs and the damping solve are every rank's alike
     const collision::CollisionStatistics& st = model_->statistics();
     const scalar calls = max(evaluations_, 1);
+    const label queries = label(st.distanceQueries);
+    const scalar distances = returnReduce(scalar(st.distanceQueries), sumOp<scalar>());
+    const scalar iterations = returnReduce(scalar(st.distanceIterations), sumOp<scalar>());
+    const scalar distanceNotConverged =
+        returnReduce(scalar(st.distanceNotConverged), sumOp<scalar>());
     Info<< "collisions: " << nSubSteps << " sub-step(s), per evaluation "
         << st.candidatePairs/calls << " candidate pairs, "
-        << st.prefilterRejected/calls << " out of reach by the overlap test, "
-        << st.distanceQueries/calls << " distances ("
-        << (st.distanceQueries ? scalar(st.distanceIterations)/st.distanceQueries : 0)
-        << " iterations each); in contact now " << model_->activeContacts()
-        << ", max overlap " << st.maxOverlapRatio << " a_min";
+        << returnReduce(scalar(st.prefilterRejected), sumOp<scalar>())/calls
+        << " out of reach by the overlap test, "
+        << distances/calls << " distances (" << (distances ? iterations/distances : 0)
+        << " iterations each";
+    if (Pstream::parRun())
+    {
+        Info<< "; most on one rank " << returnReduce(queries, maxOp<label>())/calls;
+    }
+    Info<< "); in contact now "
+        << returnReduce(label(model_->activeContacts()), sumOp<label>())
+        << ", max overlap "
+        << returnReduce(st.maxOverlapRatio, maxOp<scalar>()) << " a_min";
     if
     (
         model_->pairModel().lubrication().acts()
      || model_->wallModel().lubrication().acts()
     )
     {
-        Info<< ", lubricated " << st.lubricated/calls;
+        Info<< ", lubricated "
+            << returnReduce(scalar(st.lubricated), sumOp<scalar>())/calls;
     }
     if (model_->filmCorrection())
     {
-        Info<< ", film pairs " << st.filmPairs/calls;
+        Info<< ", film pairs "
+            << returnReduce(scalar(st.filmPairs), sumOp<scalar>())/calls;
     }
     if (st.dampingSolves > 0)
     {
@@ -536,10 +562,10 @@ void Foam::collisionModels::contact::report(const label nSubSteps)
             << collision::CollisionModel::kMaxLubricationIterations
             << " iterations; the last iterate was used" << endl;
     }
-    if (st.distanceNotConverged > 0)
+    if (distanceNotConverged > 0)
     {
         WarningInFunction
-            << st.distanceNotConverged << " distance queries of this step did"
+            << distanceNotConverged << " distance queries of this step did"
             << " not converge to distanceAccuracy "
             << model_->settings().distanceAccuracy
             << "; their last iterate (certified bracket) was used" << endl;
@@ -632,7 +658,8 @@ void Foam::collisionModels::contact::readHistory(const dictionary& dict)
 }
 
 
-void Foam::collisionModels::contact::writeHistory(Ostream& os) const
+Foam::List<Foam::FixedList<Foam::scalar, 25>>
+Foam::collisionModels::contact::historyRecords() const
 {
     const std::vector<collision::PairRecord> history = model_->history();
     List<FixedList<scalar, 25>> records(label(history.size()));
@@ -652,7 +679,54 @@ void Foam::collisionModels::contact::writeHistory(Ostream& os) const
             p.dampingForce.x(), p.dampingForce.y(), p.dampingForce.z()
         });
     }
-    os.writeEntry("collisionPairs", records);
+    return records;
+}
+
+
+void Foam::collisionModels::contact::collectHistory() const
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    // each rank holds the history of the pairs it owns: all of them on the
+    // master, in the order of (first, second, image) as a serial run has them
+    List<List<FixedList<scalar, 25>>> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = historyRecords();
+    Pstream::gatherList(all);
+    collected_.clear();
+    if (Pstream::master())
+    {
+        for (const List<FixedList<scalar, 25>>& records : all)
+        {
+            collected_.append(records);
+        }
+        auto order = [](const FixedList<scalar, 25>& r)
+        {
+            return std::make_tuple(r[0], r[1], r[13], r[14], r[15]);
+        };
+        std::sort
+        (
+            collected_.begin(), collected_.end(),
+            [&](const FixedList<scalar, 25>& a, const FixedList<scalar, 25>& b)
+            {
+                return order(a) < order(b);
+            }
+        );
+    }
+}
+
+
+void Foam::collisionModels::contact::writeHistory(Ostream& os) const
+{
+    if (Pstream::parRun())
+    {
+        os.writeEntry("collisionPairs", collected_);
+    }
+    else
+    {
+        os.writeEntry("collisionPairs", historyRecords());
+    }
 }
 
 

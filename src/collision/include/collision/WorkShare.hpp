@@ -1,0 +1,48 @@
+/**
+ * @file WorkShare.hpp
+ * @brief How the processes of a parallel run share CollisionModel's work:
+ *        each pair (of bodies, or of a body and a wall) belongs to one
+ *        process, and the processes' results are combined with one
+ *        collective per evaluation.
+ *
+ * A pair's owner is a hash of its key (PairKey) modulo the number of
+ * processes: the same on every process and for the pair's whole life, so its
+ * warm start and contact history stay on the process that uses them, and the
+ * pairs spread evenly whatever the bodies' positions. The collision core has
+ * no MPI: a solver supplies the collectives (the OpenFOAM module's
+ * pstreamWorkShare). Every process calls them in the same order, with the
+ * same bodies.
+ *
+ * See also: CollisionModel::setWorkShare.
+ */
+#ifndef COLLISION_WORKSHARE_HPP
+#define COLLISION_WORKSHARE_HPP
+
+#include "collision/Types.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace collision {
+
+class WorkShare {
+ public:
+  virtual ~WorkShare() = default;
+
+  /// this process, in [0, size())
+  virtual int rank() const = 0;
+  /// the number of processes, >= 1
+  virtual int size() const = 0;
+  /// every process's bytes, concatenated in process order, on every process (collective)
+  virtual std::vector<char> allGather(const std::vector<char>& local) const = 0;
+  /// the smallest of the processes' values, on every process (collective)
+  virtual Scalar minimum(Scalar local) const = 0;
+
+  /// the process that owns the pair with this key
+  int owner(std::uint64_t key) const;
+  bool owns(std::uint64_t key) const { return owner(key) == rank(); }
+};
+
+}  // namespace collision
+
+#endif

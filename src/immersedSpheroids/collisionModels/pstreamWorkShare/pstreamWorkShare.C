@@ -1,0 +1,63 @@
+/*---------------------------------------------------------------------------*\
+  spheroidFoam: particle-resolved flows of immersed spheroids for OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later (as OpenFOAM).
+\*---------------------------------------------------------------------------*/
+
+#include "pstreamWorkShare.H"
+#include "Pstream.H"
+#include "List.H"
+#include "ops.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+int Foam::pstreamWorkShare::rank() const
+{
+    return Pstream::myProcNo();
+}
+
+
+int Foam::pstreamWorkShare::size() const
+{
+    return Pstream::nProcs();
+}
+
+
+std::vector<char> Foam::pstreamWorkShare::allGather
+(
+    const std::vector<char>& local
+) const
+{
+    List<List<char>> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = List<char>(local.begin(), local.end());
+    Pstream::gatherList(all);
+    Pstream::scatterList(all);
+
+    std::size_t total = 0;
+    for (const List<char>& block : all)
+    {
+        total += block.size();
+    }
+    std::vector<char> out;
+    out.reserve(total);
+    for (const List<char>& block : all)
+    {
+        out.insert(out.end(), block.begin(), block.end());
+    }
+    return out;
+}
+
+
+collision::Scalar Foam::pstreamWorkShare::minimum
+(
+    const collision::Scalar local
+) const
+{
+    // reduce gathers to the master and sends its answer: the same bits
+    // on every rank
+    return returnReduce(local, minOp<scalar>());
+}
+
+
+// ************************************************************************* //

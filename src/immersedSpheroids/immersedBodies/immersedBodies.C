@@ -497,7 +497,17 @@ void Foam::immersedBodies::update(const volVectorField& U)
     {
         return;
     }
-    const double cpu0 = immersedSpheroids::processCpuTime();
+    using immersedSpheroids::processCpuTime;
+    const double cpu0 = processCpuTime();
+    double lap = cpu0;
+    // the CPU time since the last lap [s]
+    auto split = [&lap]()
+    {
+        const double now = processCpuTime();
+        const double t = now - lap;
+        lap = now;
+        return t;
+    };
 
     const scalar dt = time.deltaTValue();
     const scalar t0 = time.value() - dt;
@@ -510,16 +520,22 @@ void Foam::immersedBodies::update(const volVectorField& U)
         forcing_->assemble(bodies_, restartEta_, lastDeltaT_, solveDdt_.c);
         output_->start(t0);
     }
+    const double setupCpu = split();
 
     loads_.update(bodies_, *forcing_, U, fluidDensity_, solveDdt_, lastDeltaT_, debug);
+    const double loadsCpu = split();
+    integrator_->collision().resetSubStepCpu();
     integrator_->advance(bodies_, t0, dt);
     for (immersedBody& body : bodies_)
     {
         body.wrapCentre(domain_);
     }
+    const double motionCpu = split();
+    const double subStepCpu = integrator_->collision().subStepCpu();
     const string afterStep("after the step to t = " + time.timeName());
     immersedSpheroids::checkReplicatedState(bodies_, afterStep);
     immersedSpheroids::checkInsideMesh(mesh_, domain_, bodies_, afterStep);
+    const double checksCpu = split();
     forcing_->updateCells(bodies_);
 
     const immersedSpheroids::ddtCoefficients ddt =
@@ -532,18 +548,37 @@ void Foam::immersedBodies::update(const volVectorField& U)
     solveDdt_ = ddt;
     lastDeltaT_ = dt;
     updateIndex_ = time.timeIndex();
+    const double cellsCpu = split();
 
     output_->append();
+    const double outputCpu = split();
 
-    // the module's cost: this update, and the penalty terms of the last step
+    // the module's cost: this update by part, and the penalty terms of the
+    // last step
     const scalar lastPenaltyCpu = forcing_->cpu();
     forcing_->resetCpu();
-    updateCpu_ = (immersedSpheroids::processCpuTime() - cpu0);
+    updateCpu_ = (processCpuTime() - cpu0);
     Info<< "immersedBodies: " << bodies_.size() << " bodies, "
         << returnReduce(forcing_->nCells(), sumOp<label>())
         << " covered cells, " << returnReduce(forcing_->nTerms(), sumOp<label>())
-        << " penalty terms, CPU update " << updateCpu_
-        << " s, penalty (last step) " << lastPenaltyCpu << " s" << endl;
+        << " penalty terms, CPU update " << updateCpu_ << " s (loads "
+        << loadsCpu << ", motion " << motionCpu << " of which sub-steps "
+        << subStepCpu << ", checks " << checksCpu << ", cells "
+        << cellsCpu + setupCpu << ", output " << outputCpu
+        << "), penalty (last step) " << lastPenaltyCpu << " s";
+    if (Pstream::parRun())
+    {
+        // the rank with the most bodies in its cells (each rank's forcing
+        // and load work is over those)
+        label local = 0;
+        for (const immersedBody& body : bodies_)
+        {
+            local += body.cells().size() > 0;
+        }
+        Info<< ", bodies in a rank's cells (max) "
+            << returnReduce(local, maxOp<label>());
+    }
+    Info<< endl;
     if (meanFlow_->active())
     {
         Info<< "immersedBodies: " << meanFlow_->describe(fluidDensity_).c_str() << endl;

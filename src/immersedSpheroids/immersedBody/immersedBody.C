@@ -305,11 +305,14 @@ void Foam::immersedBody::updateCells
     const scalar lipschitz = 1/minSemiAxis();
     const pointField& C = mesh.cellCentres();
 
+    // this rank's own cells only: an image outside the bounds of its cell
+    // tree (the rank's sub-domain) is skipped before any search
+    const treeBoundBox& localBounds = mesh.cellTree().bb();
     forAll(images_, imagei)
     {
         const vector& shift = images_[imagei];
         const boundBox imageBox(bb.min() + shift, bb.max() + shift);
-        if (!imageBox.overlaps(mesh.bounds()))
+        if (!imageBox.overlaps(localBounds))
         {
             continue;
         }

@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "collisionModel.H"
+#include "processCpuTime.H"
 #include "coreConversions.H"
 #include "collision/SubStepper.hpp"
 
@@ -24,6 +25,7 @@ Foam::collisionModel::collisionModel(const fvMesh& mesh)
 :
     mesh_(mesh),
     evaluations_(0),
+    subStepCpu_(0),
     stepper_(new collision::SubStepper())
 {}
 
@@ -48,6 +50,7 @@ void Foam::collisionModel::subStep
 )
 {
     collision::CollisionModel* model = coreModel();
+    const double cpu0 = immersedSpheroids::processCpuTime();
     try
     {
         stepper_->step
@@ -61,6 +64,7 @@ void Foam::collisionModel::subStep
             << "Collision sub-step at time " << t << " s: " << err.what()
             << nl << exit(FatalError);
     }
+    subStepCpu_ += immersedSpheroids::processCpuTime() - cpu0;
     if (model)
     {
         evaluations_ += 2;

@@ -6,6 +6,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "bodyChecks.H"
+#include "indexedOctree.H"
+#include "treeDataCell.H"
 #include "cellSolidFraction.H"
 
 #include <cstring>
@@ -106,9 +108,16 @@ void Foam::immersedSpheroids::checkInsideMesh
                 c + (1 - outsideTolerance)*(body.supportPoint(directions[k]) - c);
         }
     }
+    // each rank searches only the points within its own cells' bounds (a
+    // box test first: the cell search is the costly part, done once a point).
+    // The search's tet decomposition is built on first use by a collective
+    // exchange: every rank builds it here, whether it searches or not
+    (void)mesh.tetBasePtIs();
+    const treeBoundBox& localBounds = mesh.cellTree().bb();
     forAll(points, i)
     {
-        found[i] = mesh.findCell(domain.wrap(points[i])) >= 0;
+        const point p = domain.wrap(points[i]);
+        found[i] = localBounds.contains(p) && mesh.findCell(p) >= 0;
     }
     Pstream::listCombineGather(found, orEqOp<bool>());
     Pstream::listCombineScatter(found);

@@ -126,3 +126,88 @@ TEST(SubStepper, StatesOfAnotherSizeThanTheSetAreRejected) {
   SubStepper stepper;
   EXPECT_THROW(stepper.step(set, states, nullptr, 0, 0, 1e-3), std::invalid_argument);
 }
+
+namespace {
+
+/// a body set whose body 0 is pushed by a force that grows 10^4-fold in a
+/// step (a speed the islands' margin cannot foresee)
+class KickedBodies : public LoadedBodies {
+ public:
+  using LoadedBodies::LoadedBodies;
+  void advance(std::size_t i, BodyState& s, Scalar t, Scalar dt, const Vec3& fc,
+               const Vec3& tc) const override {
+    LoadedBodies::advance(i, s, t, dt, fc, tc);
+    if (i == 0) s.centre.x() += 2e-3;  // 2 mm a sub-step
+  }
+};
+
+}  // namespace
+
+TEST(SubStepper, IslandsTakeTheSubStepsOfTheirOwnContacts) {
+  // two spheres colliding near the origin, and one far away: the pair takes
+  // the sub-steps of its contact, the far one a single step, and the pair
+  // moves exactly as when every body takes the pair's sub-steps
+  const Scalar a = 1e-3;
+  const std::vector<RigidBody> bodies{sphere(a, Vec3(-1.02 * a, 0, 0), Vec3(0.3, 0, 0)),
+                                      sphere(a, Vec3(1.02 * a, 0, 0), Vec3(-0.3, 0, 0)),
+                                      sphere(a, Vec3(0, 20 * a, 0), Vec3(0, 0.3, 0))};
+  LoadedBodies set(bodies, Vec3(0, 0, -9.81));
+  const Scalar dt = 1e-4, contactTime = 1e-4;
+  CollisionModel islandsModel = makeModel(ModelSetup(), {});
+  CollisionModel globalModel = makeModel(ModelSetup(), {});
+  std::vector<BodyState> islandStates(bodies.begin(), bodies.end());
+  std::vector<BodyState> globalStates = islandStates;
+  SubStepper islands, global;
+  int pairSteps = 0, together = 0;
+  for (int step = 0; step < 20; ++step) {
+    const Scalar t = step * dt;
+    islands.stepIslands(set, islandStates, islandsModel, contactTime, t, dt, 1);
+    const std::vector<Island>& found = islands.islands();
+    // the far body alone, in one step
+    ASSERT_GE(found.size(), 2u) << "step " << step;
+    EXPECT_EQ(found.back().bodies, std::vector<int>{2}) << "step " << step;
+    EXPECT_FALSE(found.back().interacts) << "step " << step;
+    EXPECT_EQ(islands.subSteps()[2], 1) << "step " << step;
+    if (found.size() != 2 || together < step) continue;  // the pair apart: compared while together
+    ++together;
+    EXPECT_TRUE(found[0].interacts);
+    EXPECT_EQ(islands.subSteps()[0], found[0].subSteps);
+    pairSteps = std::max(pairSteps, found[0].subSteps);
+    // the global scheme: every body in the pair's sub-steps
+    const int n = found[0].subSteps;
+    for (int k = 0; k < n; ++k) {
+      global.step(set, globalStates, &globalModel, contactTime, t + k * dt / n, dt / n);
+    }
+    for (int i = 0; i < 2; ++i) {
+      EXPECT_LE((islandStates[i].centre - globalStates[i].centre).norm(), 1e-15) << "step " << step;
+      EXPECT_LE((islandStates[i].velocity - globalStates[i].velocity).norm(), 1e-12) << "step " << step;
+    }
+  }
+  EXPECT_GE(together, 3);
+  EXPECT_GE(pairSteps, 10);  // the contact's
+  EXPECT_LT(islandStates[0].velocity.x(), 0);  // the pair rebounded
+  // the far body: one step a fluid step, free flight under gravity
+  EXPECT_NEAR(islandStates[2].centre.y(), 20 * a + 0.3 * 20 * dt, 1e-15);
+  EXPECT_NEAR(islandStates[2].velocity.z(), -9.81 * 20 * dt, 1e-14);
+}
+
+TEST(SubStepper, BodiesOfDifferentIslandsThatMeetWithinAStepAreAnError) {
+  // body 0 at rest gets kicked 2 mm a sub-step towards body 1, 5 mm away:
+  // the islands' margin (twice the largest speed, 0.3 m/s) foresaw 0.06 mm
+  const Scalar a = 1e-3;
+  const std::vector<RigidBody> bodies{sphere(a, Vec3(0, 0, 0), Vec3::Zero()),
+                                      sphere(a, Vec3(5 * a, 0, 0), Vec3(0.3, 0, 0))};
+  KickedBodies set(bodies, Vec3::Zero());
+  CollisionModel model = makeModel(ModelSetup(), {});
+  std::vector<BodyState> states(bodies.begin(), bodies.end());
+  SubStepper stepper;
+  try {
+    for (int step = 0; step < 3; ++step) stepper.stepIslands(set, states, model, 1e-4, step * 1e-4, 1e-4, 1);
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("bodies 0 and 1"), std::string::npos) << what;
+    EXPECT_NE(what.find("different islands"), std::string::npos) << what;
+    EXPECT_NE(what.find("reduce the time step"), std::string::npos) << what;
+  }
+}

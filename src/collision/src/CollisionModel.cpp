@@ -196,10 +196,14 @@ int CollisionModel::subSteps(const std::vector<CollisionBody>& bodies, Scalar dt
   if (vRel > 0) tc = std::min(tc, kPi * settings_.maxOverlap * aMin / vRel);
   // the contacts under way keep the contact time they started with
   for (const auto& kv : contact_) tc = std::min(tc, kv.second.contactTime);
-  if (share_) tc = share_->minimum(tc);  // the other processes' contacts
+  if (share_) {
+    std::vector<Scalar> all{tc};
+    share_->minimum(all);  // the other processes' contacts
+    tc = all[0];
+  }
   const Scalar n = std::ceil(dt * settings_.subStepsPerContact / tc - 1e-9);
   if (!(n <= settings_.maxSubSteps)) {
-    throw std::runtime_error("collision: " + std::to_string(n) +
+    throw TooManySubSteps("collision: " + std::to_string(n) +
                              " body sub-steps would be needed in a step of " + std::to_string(dt) +
                              " s (largest body speed " + std::to_string(speed) +
                              "; maxSubSteps " + std::to_string(settings_.maxSubSteps) + ")");
@@ -207,9 +211,172 @@ int CollisionModel::subSteps(const std::vector<CollisionBody>& bodies, Scalar dt
   return std::max(1, int(n));
 }
 
+namespace {
+
+/// union-find with path halving
+int rootOf(std::vector<int>& parent, int b) {
+  while (parent[b] != b) b = parent[b] = parent[parent[b]];
+  return b;
+}
+
+}  // namespace
+
+std::vector<Island> CollisionModel::islands(const std::vector<CollisionBody>& bodies, Scalar dt,
+                                            Scalar contactTime) {
+  require(std::isfinite(dt) && dt > 0, "time step " + std::to_string(dt) + " must be > 0");
+  require(std::isfinite(contactTime) && contactTime > 0,
+          "contact time " + std::to_string(contactTime) + " must be > 0");
+  const int n = static_cast<int>(bodies.size());
+  Scalar speed = 0;
+  for (const CollisionBody& b : bodies) {
+    if (!b.velocity.allFinite() || !b.angularVelocity.allFinite()) {
+      throw std::runtime_error("collision: a body has a non-finite velocity");
+    }
+    if (b.movable) {
+      speed = std::max(speed, b.velocity.norm() + b.angularVelocity.norm() * b.shape.maxSemiAxis());
+    }
+  }
+  // how far two bodies can close in on each other within the step (each by
+  // twice the largest speed: room for the speed a contact gives)
+  const Scalar margin = 2 * speed * dt;
+  bodyReach(bodies);
+  std::vector<Scalar> grownRadii(radii_);
+  for (Scalar& r : grownRadii) r += margin;
+  std::vector<int> parent(n);
+  for (int i = 0; i < n; ++i) parent[i] = i;
+  std::vector<char> interacts(n, 0);
+  bool oneIsland = false;
+  try {
+    for (const CandidatePair& c : search_.find(centres_, grownRadii, box_)) {
+      if (!bodies[c.first].movable && !bodies[c.second].movable) continue;
+      interacts[c.first] = interacts[c.second] = 1;
+      parent[rootOf(parent, c.first)] = rootOf(parent, c.second);
+    }
+  } catch (const std::invalid_argument&) {
+    // the margin makes the reach too long for the periodic box's single
+    // image (the bodies' own reach fits: forces() checks it): every body
+    // in one island, as without islands
+    oneIsland = true;
+  }
+  if (oneIsland) {
+    for (int i = 0; i < n; ++i) {
+      parent[i] = 0;
+      interacts[i] = n > 1;
+    }
+  }
+  const Lubrication& wallLubrication = wall_->lubrication();
+  for (int i = 0; i < n; ++i) {
+    if (!bodies[i].movable) continue;
+    const Scalar reach =
+        std::max(wallLubrication.acts() ? wallLubrication.activationGap(
+                                              bodies[i].shape.maxOfMaxCurvatureRadius(), kInf,
+                                              bodies[i].cellSize)
+                                        : Scalar(0),
+                 film_ ? bodies[i].filmGap : Scalar(0));
+    for (const PlaneWall& w : walls_) {
+      if (wallDistance(bodies[i].shape, w).distance <= reach + margin) interacts[i] = 1;
+    }
+  }
+
+  // the islands in the order of their first bodies, each body ascending
+  std::vector<int> islandOf(n, -1);
+  std::vector<Island> out;
+  for (int i = 0; i < n; ++i) {
+    const int r = rootOf(parent, i);
+    if (islandOf[r] < 0) {
+      islandOf[r] = static_cast<int>(out.size());
+      out.emplace_back();
+    }
+    Island& island = out[islandOf[r]];
+    island.bodies.push_back(i);
+    island.interacts = island.interacts || interacts[i];
+  }
+  // each island's shortest contact time: its fastest possible impact and the
+  // contacts under way (on every process: one collective)
+  std::vector<Scalar> tc(out.size(), contactTime);
+  std::vector<Scalar> islandSpeed(out.size(), 0), islandMinAxis(out.size(), kInf);
+  for (int i = 0; i < n; ++i) {
+    const int k = islandOf[rootOf(parent, i)];
+    islandMinAxis[k] = std::min(islandMinAxis[k], bodies[i].shape.minSemiAxis());
+    if (bodies[i].movable) {
+      islandSpeed[k] = std::max(islandSpeed[k], bodies[i].velocity.norm() +
+                                                    bodies[i].angularVelocity.norm() *
+                                                        bodies[i].shape.maxSemiAxis());
+    }
+  }
+  for (const auto& [k, c] : contact_) {
+    const int i = PairKey::first(k);
+    if (i < n) {
+      Scalar& t = tc[islandOf[rootOf(parent, i)]];
+      t = std::min(t, c.contactTime);
+    }
+  }
+  if (share_) share_->minimum(tc);
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    Island& island = out[k];
+    if (!island.interacts) continue;
+    if (islandSpeed[k] > 0) tc[k] = std::min(tc[k], kPi * settings_.maxOverlap * islandMinAxis[k] / (2 * islandSpeed[k]));
+    const Scalar steps = std::ceil(dt * settings_.subStepsPerContact / tc[k] - 1e-9);
+    if (!(steps <= settings_.maxSubSteps)) {
+      throw TooManySubSteps("collision: " + std::to_string(steps) +
+                            " body sub-steps would be needed in a step of " + std::to_string(dt) +
+                            " s (largest body speed " + std::to_string(islandSpeed[k]) +
+                            "; maxSubSteps " + std::to_string(settings_.maxSubSteps) + ")");
+    }
+    island.subSteps = std::max(1, int(steps));
+  }
+  return out;
+}
+
+void CollisionModel::checkIslands(const std::vector<CollisionBody>& bodies,
+                                  const std::vector<Island>& islands) {
+  const int n = static_cast<int>(bodies.size());
+  std::vector<int> islandOf(n, -1);
+  for (std::size_t k = 0; k < islands.size(); ++k) {
+    for (const int b : islands[k].bodies) islandOf[b] = static_cast<int>(k);
+  }
+  bodyReach(bodies);
+  for (const CandidatePair& c : search_.find(centres_, radii_, box_)) {
+    const int i = c.first, j = c.second;
+    if (islandOf[i] == islandOf[j] || (!bodies[i].movable && !bodies[j].movable)) continue;
+    const Vec3 shift = c.image != PeriodicBox::kNoImage ? box_.shift(c.image) : Vec3::Zero();
+    if (overlap_.test(grown(bodies[i].shape, reach_[i]),
+                      grown(bodies[j].shape, reach_[j]).translatedBy(shift)) ==
+        ellipsoids::OverlapStatus::separated) {
+      continue;
+    }
+    throw std::runtime_error(
+        "collision: bodies " + std::to_string(i) + " and " + std::to_string(j) +
+        " came within reach of each other within a step from different islands (bodies that can"
+        " meet within a step are sub-stepped together; their speeds grew beyond the islands'"
+        " margin of twice the largest speed): reduce the time step");
+  }
+}
+
+void CollisionModel::bodyReach(const std::vector<CollisionBody>& bodies,
+                               const std::vector<char>* active) {
+  const int n = static_cast<int>(bodies.size());
+  const Lubrication& pairLubrication = pair_->lubrication();
+  Scalar largestCellSize = 0;
+  for (int i = 0; i < n; ++i) largestCellSize = std::max(largestCellSize, bodies[i].cellSize);
+  centres_.resize(n);
+  radii_.resize(n);
+  reach_.resize(n);
+  for (int i = 0; i < n; ++i) {
+    if (active && !(*active)[i]) continue;
+    const ellipsoids::Ellipsoid& e = bodies[i].shape;
+    reach_[i] = pairLubrication.acts()
+                    ? pairLubrication.reach(e.maxOfMaxCurvatureRadius(), largestCellSize)
+                    : 0;
+    if (film_) reach_[i] = std::max(reach_[i], 0.5 * bodies[i].filmGap);
+    centres_[i] = e.centre();
+    radii_[i] = e.maxSemiAxis() + reach_[i];
+  }
+}
+
 void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar contactTime,
                             Scalar subDt, std::vector<Vec3>& force, std::vector<Vec3>& torque,
-                            bool recordDamping, Scalar elapsed) {
+                            bool recordDamping, Scalar elapsed, const std::vector<char>* active) {
   elapsed_ = elapsed < 0 ? subDt : elapsed;
   const int n = static_cast<int>(bodies.size());
   require(n <= PairKey::kMaxBodies, "collision: at most " + std::to_string(PairKey::kMaxBodies) + " bodies");
@@ -240,40 +407,49 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
     }
     lastContactValid_ = true;
   }
-  const Lubrication& pairLubrication = pair_->lubrication();
   const Lubrication& wallLubrication = wall_->lubrication();
   const bool films = film_ != nullptr;
-  Scalar largestCellSize = 0;
-  for (int i = 0; i < n; ++i) largestCellSize = std::max(largestCellSize, bodies[i].cellSize);
+  auto on = [active](int b) { return !active || (*active)[b]; };
+  require(!active || static_cast<int>(active->size()) == n,
+          "collision: the active bodies' flags are not one per body");
 
-  // reach of each body: half the largest activation gap it can take part in
-  centres_.resize(n);
-  radii_.resize(n);
-  reach_.resize(n);
-  for (int i = 0; i < n; ++i) {
-    const ellipsoids::Ellipsoid& e = bodies[i].shape;
-    reach_[i] = pairLubrication.acts()
-                    ? pairLubrication.reach(e.maxOfMaxCurvatureRadius(), largestCellSize)
-                    : 0;
-    if (films) reach_[i] = std::max(reach_[i], 0.5 * bodies[i].filmGap);
-    centres_[i] = e.centre();
-    radii_[i] = e.maxSemiAxis() + reach_[i];
-  }
+  // the active bodies, their reach and bounding spheres for the search, and
   // the prefilter's grown bodies and their axis-aligned boxes (half extents
   // sqrt(P_kk)), once per body (not per pair)
+  bodyReach(bodies, active);
+  activeIndex_.clear();
+  activeCentres_.clear();
+  activeRadii_.clear();
   grown_.clear();
   halfExtent_.resize(n);
   for (int i = 0; i < n; ++i) {
+    if (!on(i)) {
+      grown_.push_back(bodies[i].shape);  // (a place holder: not used)
+      continue;
+    }
+    activeIndex_.push_back(i);
+    activeCentres_.push_back(centres_[i]);
+    activeRadii_.push_back(radii_[i]);
     grown_.push_back(grown(bodies[i].shape, reach_[i]));
     halfExtent_[i] = grown_[i].shapeMatrix().diagonal().cwiseSqrt();
   }
   nextDirection_.clear();
   nextContact_.clear();
+  if (active) {
+    // the pairs of the bodies that do not take this sub-step keep their
+    // histories (islands: a pair's bodies are both active or both not)
+    for (const auto& [k, d] : direction_) {
+      if (!on(PairKey::first(k))) nextDirection_.emplace(k, d);
+    }
+    for (const auto& [k, c] : contact_) {
+      if (!on(PairKey::first(k))) nextContact_.emplace(k, c);
+    }
+  }
 
-  const auto& pairs = search_.find(centres_, radii_, box_);
+  const auto& pairs = search_.find(activeCentres_, activeRadii_, box_);
   statistics_.candidatePairs += static_cast<long>(pairs.size());
   for (const CandidatePair& candidate : pairs) {
-    const int i = candidate.first, j = candidate.second;
+    const int i = activeIndex_[candidate.first], j = activeIndex_[candidate.second];
     if (!bodies[i].movable && !bodies[j].movable) continue;
     if (!owns(key(i, j, candidate.image))) continue;
     // body j through its image (a copy only for a shifted image)
@@ -330,7 +506,7 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
   }
 
   for (int i = 0; i < n; ++i) {
-    if (!bodies[i].movable) continue;
+    if (!bodies[i].movable || !on(i)) continue;
     for (int w = 0; w < static_cast<int>(walls_.size()); ++w) {
       if (!owns(key(i, -1 - w))) continue;
       const WallDistance d = wallDistance(bodies[i].shape, walls_[w]);
@@ -689,7 +865,8 @@ void CollisionModel::dampingForces(const std::vector<CollisionBody>& bodies,
                                    const std::vector<Vec3>& endAngularVelocity,
                                    const std::vector<Vec3>& referenceVelocity,
                                    const std::vector<Vec3>& referenceAngularVelocity, Scalar subDt,
-                                   std::vector<Vec3>& force, std::vector<Vec3>& torque) {
+                                   std::vector<Vec3>& force, std::vector<Vec3>& torque,
+                                   const std::vector<char>* active) {
   const std::size_t n = bodies.size();
   require(endVelocity.size() == n && endAngularVelocity.size() == n,
           "dampingForces: " + std::to_string(n) + " bodies but " + std::to_string(endVelocity.size()) +
@@ -698,7 +875,14 @@ void CollisionModel::dampingForces(const std::vector<CollisionBody>& bodies,
           "dampingForces: sub-step " + std::to_string(subDt) + " must be > 0");
   force.assign(n, Vec3::Zero());
   torque.assign(n, Vec3::Zero());
-  lastDamping_.clear();
+  if (active) {
+    // the damping forces of the pairs that do not take this sub-step stay
+    for (auto it = lastDamping_.begin(); it != lastDamping_.end();) {
+      it = (*active)[PairKey::first(it->first)] ? lastDamping_.erase(it) : std::next(it);
+    }
+  } else {
+    lastDamping_.clear();
+  }
   if (damped_.empty()) return;
   bool films = false;
   for (const DampedPair& p : damped_) {

@@ -161,30 +161,26 @@ void Foam::bodyIntegrator::advance
     }
 
     const bool colliding = collision_->active();
-    const label nSub =
-        colliding
-      ? max(subSteps_, collision_->subSteps(set, states, dt))
-      : subSteps_;
-    const scalar subDt = dt/nSub;
-
-    // the states the hydrodynamic force of this step responded to (the
-    // film correction)
-    std::vector<collision::BodyState> referenceStates;
+    vectorField FcMean(nBodies, Zero), TcMean(nBodies, Zero);
+    label nSub = subSteps_;
     if (colliding)
     {
-        referenceStates = states;
-    }
-
-    vectorField Fc, Tc;
-    vectorField FcMean(nBodies, Zero), TcMean(nBodies, Zero);
-    for (label stepi = 0; stepi < nSub; ++stepi)
-    {
-        collision_->subStep
+        // island by island; the states the hydrodynamic force of this step
+        // responded to for the film correction
+        const std::vector<collision::BodyState> referenceStates(states);
+        nSub = collision_->advance
         (
-            set, states, t0 + stepi*subDt, dt, subDt, referenceStates, Fc, Tc
+            set, states, t0, dt, subSteps_, referenceStates, FcMean, TcMean
         );
-        FcMean += Fc/nSub;
-        TcMean += Tc/nSub;
+    }
+    else
+    {
+        const scalar subDt = dt/nSub;
+        vectorField Fc, Tc;
+        for (label stepi = 0; stepi < nSub; ++stepi)
+        {
+            collision_->subStep(set, states, t0 + stepi*subDt, dt, subDt, {}, Fc, Tc);
+        }
     }
 
     forAll(bodies, i)

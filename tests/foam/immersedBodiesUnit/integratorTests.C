@@ -5,10 +5,10 @@ Description
     5. One body integrator. A spinning prolate spheroid thrown at a sphere
     in vacuum (no fluid, no gravity; contact with friction), stepped twice:
     - as coupled runs step bodies: immersedBody objects in a coupledBodySet,
-      the sub-steps and each sub-step through the run-time selected
-      collision model (collisionModel::subSteps, collisionModel::subStep);
-    - as the collision unit tests and validation/dryCollisions step them:
-      collision::RigidBody in collision::collisionStep.
+      island by island through the run-time selected collision model
+      (collisionModel::advance);
+    - as the core steps them: collision::RigidBody in a
+      collision::RigidBodySet, collision::SubStepper::stepIslands.
     With no fluid every extra force of the coupled set is zero, so the two
     trajectories must agree exactly (same operations on the same numbers):
     any difference between the two paths' sub-step or rigid-body step fails
@@ -23,6 +23,8 @@ Description
 #include "collisionModel.H"
 #include "collision/CollisionModel.hpp"
 #include "collision/RigidBody.hpp"
+#include "collision/RigidBodySet.hpp"
+#include "collision/SubStepper.hpp"
 
 using namespace testChecks;
 
@@ -119,6 +121,9 @@ void immersedBodiesTests::testIntegrator(const fvMesh& mesh)
         {}
     );
     std::vector<collision::RigidBody> vacuum{rigidCopy(bodies[0]), rigidCopy(bodies[1])};
+    collision::RigidBodySet vacuumSet(vacuum);
+    std::vector<collision::BodyState> vacuumStates{vacuum[0], vacuum[1]};
+    collision::SubStepper vacuumStepper;
 
     const collision::BodyState start0 = states[0], start1 = states[1];
     bool same = true;
@@ -127,17 +132,18 @@ void immersedBodiesTests::testIntegrator(const fvMesh& mesh)
     for (label stepi = 0; stepi < 80 && same; ++stepi)
     {
         const scalar t = stepi*dt;
-        const label nSub = coupledModel->subSteps(set, states, dt);
+        const label nSub = coupledModel->advance(set, states, t, dt, 1, {}, Fc, Tc);
         maxSubSteps = max(maxSubSteps, nSub);
-        for (label k = 0; k < nSub; ++k)
+        vacuumStepper.stepIslands(vacuumSet, vacuumStates, vacuumModel, 10*dt, t, dt, 1);
+        label nVacuum = 1;
+        for (const int n : vacuumStepper.subSteps())
         {
-            coupledModel->subStep(set, states, t + k*dt/nSub, dt, dt/nSub, {}, Fc, Tc);
+            nVacuum = max(nVacuum, label(n));
         }
-        const int nVacuum = collision::collisionStep(vacuum, vacuumModel, 10*dt, dt);
         same = nVacuum == nSub;
         for (std::size_t i = 0; i < states.size(); ++i)
         {
-            same = same && sameState(states[i], vacuum[i]);
+            same = same && sameState(states[i], vacuumStates[i]);
         }
         if (!same)
         {
@@ -159,7 +165,7 @@ void immersedBodiesTests::testIntegrator(const fvMesh& mesh)
     (
         same,
         "integrator: coupled sub-steps (coupledBodySet, collisionModel) equal the"
-        " core's vacuum collisionStep exactly"
+        " core's vacuum stepIslands exactly"
     );
 }
 

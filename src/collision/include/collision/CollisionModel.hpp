@@ -58,6 +58,7 @@
 #include "ellipsoids/OverlapTest.hpp"
 
 #include <cstdint>
+#include <stdexcept>
 #include <memory>
 #include <string>
 #include <tuple>
@@ -157,6 +158,21 @@ struct DampedPair {
   std::uint64_t key = 0;
 };
 
+/// Bodies that may interact within a fluid step, and the sub-steps they need (CollisionModel::islands).
+struct Island {
+  std::vector<int> bodies;  ///< ascending body indices
+  /// subSteps() for these bodies and their contacts alone (1 if they do not interact)
+  int subSteps = 1;
+  /// two or more bodies, or a body within reach of a wall: the collision
+  /// forces are evaluated; otherwise the body moves under its other forces
+  bool interacts = false;
+};
+
+/// A step that needs more sub-steps than maxSubSteps (CollisionModel::subSteps, islands).
+struct TooManySubSteps : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 /// What the model remembers of one pair between calls (the restart state).
 struct PairRecord {
   int first = 0;                  ///< body index
@@ -220,6 +236,24 @@ class CollisionModel {
    * @throws std::runtime_error if more than maxSubSteps would be needed
    */
   int subSteps(const std::vector<CollisionBody>& bodies, Scalar dt, Scalar contactTime) const;
+  /**
+   * The islands of a fluid step dt: bodies linked, directly or through others,
+   * by pairs whose bounding spheres, grown by their reach (lubrication, film)
+   * and by twice the largest distance a body covers in dt (2 v_max dt, v_max
+   * the largest speed plus rotation at the largest semi-axis), overlap; a
+   * body within that distance of a wall's reach interacts with it. Each
+   * island's sub-steps are subSteps() of its bodies and contacts alone. In
+   * the order of their first bodies; with a work share, the same on every
+   * process (one collective).
+   * @throws TooManySubSteps if an island would need more than maxSubSteps
+   */
+  std::vector<Island> islands(const std::vector<CollisionBody>& bodies, Scalar dt, Scalar contactTime);
+  /**
+   * After the islands of a step were advanced apart: throws std::runtime_error
+   * naming two bodies of different islands whose grown bodies (their reach)
+   * now meet, which the islands' margin should have ruled out.
+   */
+  void checkIslands(const std::vector<CollisionBody>& bodies, const std::vector<Island>& islands);
 
   /**
    * Contact forces and torques (about the centres) on every body for one
@@ -234,9 +268,11 @@ class CollisionModel {
    * The statistics of the call are added to statistics().
    * @throws std::runtime_error on a non-finite force (naming the bodies)
    */
+  /// active: the bodies that take this sub-step (nullptr: all; a union of
+  /// islands): only their pairs are evaluated, the others' histories are kept.
   void forces(const std::vector<CollisionBody>& bodies, Scalar contactTime, Scalar subDt,
               std::vector<Vec3>& force, std::vector<Vec3>& torque, bool recordDamping = true,
-              Scalar elapsed = -1);
+              Scalar elapsed = -1, const std::vector<char>* active = nullptr);
 
   /// The damped pairs recorded by the last forces() call that recorded them.
   const std::vector<DampedPair>& dampedPairs() const { return damped_; }
@@ -270,7 +306,8 @@ class CollisionModel {
                      const std::vector<Vec3>& endAngularVelocity,
                      const std::vector<Vec3>& referenceVelocity,
                      const std::vector<Vec3>& referenceAngularVelocity, Scalar subDt,
-                     std::vector<Vec3>& force, std::vector<Vec3>& torque);
+                     std::vector<Vec3>& force, std::vector<Vec3>& torque,
+                     const std::vector<char>* active = nullptr);
 
   static constexpr int kMaxDampingSweeps = 1000;
   static constexpr int kMaxLubricationIterations = 200;
@@ -325,6 +362,9 @@ class CollisionModel {
   static std::uint64_t key(int i, int j, int image = PeriodicBox::kNoImage) {
     return PairKey::encode(i, j, image);
   }
+  /// each body's reach: half the largest activation gap it can take part in
+  /// (centres_, radii_, reach_; of the active bodies only, if given)
+  void bodyReach(const std::vector<CollisionBody>& bodies, const std::vector<char>* active = nullptr);
   /// does this process compute the pair (always without a work share)?
   bool owns(std::uint64_t k) const { return !share_ || share_->owns(k); }
   /// each body's contact force of this process's pairs in contact_ (the
@@ -401,6 +441,9 @@ class CollisionModel {
   std::vector<std::pair<std::uint64_t, Vec3>> lastForces_;
   std::vector<Vec3> contactScratch_;
   std::vector<char> sendScratch_;
+  std::vector<int> activeIndex_;  ///< forces(): the active bodies (search order)
+  std::vector<Vec3> activeCentres_;
+  std::vector<Scalar> activeRadii_;
   std::vector<Scalar> impulse_;  ///< dampingForces(): the pairs' normal impulses
   std::vector<Scalar> pairInverseMass_, pairReferenceSpeed_;  ///< dampingForces() scratch
 };

@@ -13,6 +13,10 @@
  *     other force, and the damping forces implicit in them, added to it;
  *  4. each body advanced from its start state under the sum.
  * Without a collision model the bodies are advanced under their other forces.
+ * stepIslands() takes a fluid step island by island (CollisionModel::islands):
+ * the islands that need the same number of sub-steps step together, so that
+ * a body far from any other takes the fewest and a contact's island the
+ * sub-steps its contact needs.
  * validation/dryCollisions measures the scheme's restitution error against
  * subStepsPerContact.
  */
@@ -20,6 +24,7 @@
 #define COLLISION_SUBSTEPPER_HPP
 
 #include "collision/BodySet.hpp"
+#include "collision/CollisionModel.hpp"
 
 #include <vector>
 
@@ -38,17 +43,41 @@ class SubStepper {
    */
   void step(BodySet& bodies, std::vector<BodyState>& states, CollisionModel* model,
             Scalar contactTime, Scalar t, Scalar dt,
-            const std::vector<BodyState>& referenceStates = {});
+            const std::vector<BodyState>& referenceStates = {},
+            const std::vector<char>* active = nullptr);
+
+  /**
+   * Advance states from t over the fluid step dt island by island: each
+   * island in max(minSubSteps, its sub-steps) sub-steps (the islands with
+   * the same number together; those that do not interact without collision
+   * forces), then CollisionModel::checkIslands. meanForce(), meanTorque():
+   * each body's collision force and torque over the step; subSteps(): each
+   * body's number of sub-steps.
+   * @throws TooManySubSteps, and what step() and checkIslands() throw
+   */
+  void stepIslands(BodySet& bodies, std::vector<BodyState>& states, CollisionModel& model,
+                   Scalar contactTime, Scalar t, Scalar dt, int minSubSteps,
+                   const std::vector<BodyState>& referenceStates = {});
 
   /// The collision force and torque (about the centre) each body got in the last step.
   const std::vector<Vec3>& force() const { return force_; }
   const std::vector<Vec3>& torque() const { return torque_; }
 
+  /// stepIslands(): each body's mean collision force and torque over the fluid step
+  const std::vector<Vec3>& meanForce() const { return meanForce_; }
+  const std::vector<Vec3>& meanTorque() const { return meanTorque_; }
+  /// stepIslands(): each body's sub-steps, and the islands of the step
+  const std::vector<int>& subSteps() const { return bodySubSteps_; }
+  const std::vector<Island>& islands() const { return islands_; }
+
  private:
   std::vector<CollisionBody> start_, predicted_;
   std::vector<BodyState> trial_;
   std::vector<Vec3> force_, torque_, force1_, torque1_, endVelocity_, endAngularVelocity_,
-      referenceVelocity_, referenceAngularVelocity_;
+      referenceVelocity_, referenceAngularVelocity_, meanForce_, meanTorque_;
+  std::vector<int> bodySubSteps_;
+  std::vector<Island> islands_;
+  std::vector<char> active_;
 };
 
 }  // namespace collision

@@ -35,8 +35,8 @@ class WorkShare {
   virtual int size() const = 0;
   /// every process's bytes, concatenated in process order, on every process (collective)
   virtual std::vector<char> allGather(const std::vector<char>& local) const = 0;
-  /// the smallest of the processes' values, on every process (collective)
-  virtual Scalar minimum(Scalar local) const = 0;
+  /// each entry the smallest of the processes' values of it, on every process (collective)
+  virtual void minimum(std::vector<Scalar>& values) const = 0;
 
   /// the process that owns the pair with this key
   int owner(std::uint64_t key) const;

@@ -7,6 +7,7 @@ License
 
 #include "collisionModel.H"
 #include "processCpuTime.H"
+#include "HashSet.H"
 #include "coreConversions.H"
 #include "collision/SubStepper.hpp"
 
@@ -26,6 +27,8 @@ Foam::collisionModel::collisionModel(const fvMesh& mesh)
     mesh_(mesh),
     evaluations_(0),
     subStepCpu_(0),
+    interactingIslands_(0),
+    islandBodies_(0),
     stepper_(new collision::SubStepper())
 {}
 
@@ -36,6 +39,119 @@ Foam::collisionModel::~collisionModel() = default;
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::collisionModel::tooManySubSteps
+(
+    const collision::BodySet& bodies,
+    const std::vector<collision::BodyState>& states,
+    const scalar dt,
+    const std::string& what
+) const
+{
+    // the body that sets the sub-step: the fastest (speed plus rotation at
+    // its largest semi-axis)
+    const std::vector<collision::CollisionBody> collisionBodies =
+        bodies.collisionBodies(states);
+    label fastest = 0;
+    scalar speed = -1;
+    for (std::size_t i = 0; i < collisionBodies.size(); ++i)
+    {
+        const collision::CollisionBody& b = collisionBodies[i];
+        const scalar s =
+            b.velocity.norm() + b.angularVelocity.norm()*b.shape.maxSemiAxis();
+        if (b.movable && s > speed)
+        {
+            speed = s;
+            fastest = label(i);
+        }
+    }
+    FatalErrorInFunction
+        << "Collision sub-steps of the step " << dt << " s: " << what.c_str()
+        << nl << "    The fastest body is '"
+        << bodies.name(fastest).c_str() << "' at "
+        << immersedSpheroids::toFoam(states[fastest].centre) << ", "
+        << mag(immersedSpheroids::toFoam(states[fastest].velocity))
+        << " m/s and "
+        << mag(immersedSpheroids::toFoam(states[fastest].angularVelocity))
+        << " rad/s. If that speed is not physical, the run went wrong"
+        << " before this step (bodies thrown apart, an unstable body:"
+        << " see its time series); otherwise raise maxSubSteps ("
+        << const_cast<collisionModel&>(*this).coreModel()->settings().maxSubSteps
+        << ") in the collision dictionary or reduce deltaT" << nl
+        << exit(FatalError);
+}
+
+
+Foam::label Foam::collisionModel::advance
+(
+    collision::BodySet& bodies,
+    std::vector<collision::BodyState>& states,
+    const scalar t,
+    const scalar dt,
+    const label minSubSteps,
+    const std::vector<collision::BodyState>& referenceStates,
+    vectorField& force,
+    vectorField& torque
+)
+{
+    collision::CollisionModel* model = coreModel();
+    if (!model)
+    {
+        FatalErrorInFunction
+            << "advance needs an active collision model" << exit(FatalError);
+    }
+    const double cpu0 = immersedSpheroids::processCpuTime();
+    try
+    {
+        stepper_->stepIslands
+        (
+            bodies, states, *model, contactTime(dt), t, dt, minSubSteps,
+            referenceStates
+        );
+    }
+    catch (const collision::TooManySubSteps& err)
+    {
+        tooManySubSteps(bodies, states, dt, err.what());
+    }
+    catch (const std::exception& err)
+    {
+        FatalErrorInFunction
+            << "Collision step from time " << t << " s: " << err.what()
+            << nl << exit(FatalError);
+    }
+    subStepCpu_ += immersedSpheroids::processCpuTime() - cpu0;
+
+    // two evaluations a sub-step of each number of sub-steps the
+    // interacting islands took (those with the same number step together)
+    labelHashSet counts;
+    interactingIslands_ = 0;
+    islandBodies_ = 0;
+    for (const collision::Island& island : stepper_->islands())
+    {
+        if (island.interacts)
+        {
+            counts.insert(max(minSubSteps, label(island.subSteps)));
+            ++interactingIslands_;
+            islandBodies_ += label(island.bodies.size());
+        }
+    }
+    for (const label n : counts)
+    {
+        evaluations_ += 2*n;
+    }
+
+    label most = 1;
+    force.setSize(label(states.size()));
+    torque.setSize(label(states.size()));
+    forAll(force, i)
+    {
+        force[i] = immersedSpheroids::toFoam(stepper_->meanForce()[i]);
+        torque[i] = immersedSpheroids::toFoam(stepper_->meanTorque()[i]);
+        most = max(most, label(stepper_->subSteps()[i]));
+    }
+    return most;
+}
+
 
 void Foam::collisionModel::subStep
 (

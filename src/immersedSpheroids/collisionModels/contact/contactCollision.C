@@ -404,53 +404,6 @@ Foam::collisionModels::contact::contact
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::label Foam::collisionModels::contact::subSteps
-(
-    const collision::BodySet& bodies,
-    const std::vector<collision::BodyState>& states,
-    const scalar dt
-)
-{
-    const std::vector<collision::CollisionBody> collisionBodies =
-        bodies.collisionBodies(states);
-    try
-    {
-        return model_->subSteps(collisionBodies, dt, contactSteps_*dt);
-    }
-    catch (const std::exception& err)
-    {
-        // the body that sets the sub-step: the fastest (speed plus
-        // rotation at its largest semi-axis)
-        label fastest = 0;
-        scalar speed = -1;
-        for (std::size_t i = 0; i < collisionBodies.size(); ++i)
-        {
-            const collision::CollisionBody& b = collisionBodies[i];
-            const scalar s =
-                b.velocity.norm() + b.angularVelocity.norm()*b.shape.maxSemiAxis();
-            if (b.movable && s > speed)
-            {
-                speed = s;
-                fastest = label(i);
-            }
-        }
-        FatalErrorInFunction
-            << "Collision sub-steps of the step " << dt << " s: " << err.what()
-            << nl << "    The fastest body is '"
-            << bodies.name(fastest).c_str() << "' at "
-            << immersedSpheroids::toFoam(states[fastest].centre) << ", "
-            << mag(immersedSpheroids::toFoam(states[fastest].velocity))
-            << " m/s and " << mag(immersedSpheroids::toFoam(states[fastest].angularVelocity))
-            << " rad/s. If that speed is not physical, the run went wrong"
-            << " before this step (bodies thrown apart, an unstable body:"
-            << " see its time series); otherwise raise maxSubSteps ("
-            << model_->settings().maxSubSteps << ") in the collision"
-            << " dictionary or reduce deltaT" << nl << exit(FatalError);
-    }
-    return 1;
-}
-
-
 void Foam::collisionModels::contact::checkOverlaps
 (
     const collision::BodySet& bodies,
@@ -512,7 +465,9 @@ void Foam::collisionModels::contact::report(const label nSubSteps)
     const scalar iterations = returnReduce(scalar(st.distanceIterations), sumOp<scalar>());
     const scalar distanceNotConverged =
         returnReduce(scalar(st.distanceNotConverged), sumOp<scalar>());
-    Info<< "collisions: " << nSubSteps << " sub-step(s), per evaluation "
+    Info<< "collisions: " << nSubSteps << " sub-step(s) (the most of "
+        << interactingIslands_ << " island(s) of " << islandBodies_
+        << " bodies), per evaluation "
         << st.candidatePairs/calls << " candidate pairs, "
         << returnReduce(scalar(st.prefilterRejected), sumOp<scalar>())/calls
         << " out of reach by the overlap test, "

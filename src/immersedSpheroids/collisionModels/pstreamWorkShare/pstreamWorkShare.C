@@ -49,14 +49,16 @@ std::vector<char> Foam::pstreamWorkShare::allGather
 }
 
 
-collision::Scalar Foam::pstreamWorkShare::minimum
+void Foam::pstreamWorkShare::minimum
 (
-    const collision::Scalar local
+    std::vector<collision::Scalar>& values
 ) const
 {
-    // reduce gathers to the master and sends its answer: the same bits
-    // on every rank
-    return returnReduce(local, minOp<scalar>());
+    // gathered to the master and its answer sent: the same bits on every rank
+    List<scalar> all(values.begin(), values.end());
+    Pstream::listCombineGather(all, minEqOp<scalar>());
+    Pstream::listCombineScatter(all);
+    std::copy(all.begin(), all.end(), values.begin());
 }
 
 

@@ -275,6 +275,7 @@ Foam::point Foam::immersedBody::supportPoint(const vector& n) const
 void Foam::immersedBody::updateCells
 (
     const polyMesh& mesh,
+    const indexedOctree<treeDataCell>& cellTree,
     const scalarField& cellRadius,
     const periodicDomain& domain,
     const scalar linkReach
@@ -307,7 +308,7 @@ void Foam::immersedBody::updateCells
 
     // this rank's own cells only: an image outside the bounds of its cell
     // tree (the rank's sub-domain) is skipped before any search
-    const treeBoundBox& localBounds = mesh.cellTree().bb();
+    const treeBoundBox& localBounds = cellTree.bb();
     forAll(images_, imagei)
     {
         const vector& shift = images_[imagei];
@@ -317,7 +318,7 @@ void Foam::immersedBody::updateCells
             continue;
         }
         const point X = state_.centre + shift;
-        const labelList candidates = mesh.cellTree().findBox(treeBoundBox(imageBox));
+        const labelList candidates = cellTree.findBox(treeBoundBox(imageBox));
         for (const label celli : candidates)
         {
             // |psi(x) - psi(C)| <= |x - C|/a_min: far cells need no clipping

@@ -116,6 +116,7 @@ Foam::penaltyForcing::penaltyForcing
     softCellSteps_(softCellSteps),
     wallCell_(mesh.nCells(), false),
     cellRadius_(immersedSpheroids::cellRadii(mesh)),
+    cellTree_(immersedSpheroids::cachedCellTree(mesh)),
     domain_(domain),
     linkReach_(2*returnReduce(max(cellRadius_), maxOp<scalar>())),
     cellsFound_(false),
@@ -430,7 +431,7 @@ void Foam::penaltyForcing::updateCells(PtrList<immersedBody>& bodies)
     {
         if (!cellsFound_ || body.motion().moves())
         {
-            body.updateCells(mesh_, cellRadius_, domain_, linkReach_);
+            body.updateCells(mesh_, *cellTree_, cellRadius_, domain_, linkReach_);
         }
     }
     cellsFound_ = true;

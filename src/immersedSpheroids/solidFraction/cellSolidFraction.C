@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "cellSolidFraction.H"
+#include "Random.H"
 #include "immersedBody.H"
 
 // * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
@@ -156,6 +157,29 @@ Foam::tmp<Foam::scalarField> Foam::immersedSpheroids::cellRadii(const polyMesh& 
         }
     }
     return tr;
+}
+
+
+Foam::autoPtr<Foam::indexedOctree<Foam::treeDataCell>>
+Foam::immersedSpheroids::cachedCellTree(const polyMesh& mesh)
+{
+    // the bounds and octree parameters of polyMesh::cellTree
+    treeBoundBox overallBb(mesh.points());
+    Random rndGen(261782);
+    overallBb = overallBb.extend(rndGen, 1e-4);
+    overallBb.min() -= point::uniform(ROOTVSMALL);
+    overallBb.max() += point::uniform(ROOTVSMALL);
+    return autoPtr<indexedOctree<treeDataCell>>
+    (
+        new indexedOctree<treeDataCell>
+        (
+            treeDataCell(true, mesh, polyMesh::CELL_TETS),
+            overallBb,
+            8,      // maxLevel
+            10,     // leafsize
+            5.0     // duplicity
+        )
+    );
 }
 
 

@@ -174,6 +174,10 @@ void immersedBodiesTests::testSolidFraction
         const label nCells = mesh.nCells();
         h[meshi] = Foam::cbrt(sum(V)/nCells);
         const scalarField cellRadius(immersedSpheroids::cellRadii(mesh));
+        const autoPtr<indexedOctree<treeDataCell>> cellTree
+        (
+            immersedSpheroids::cachedCellTree(mesh)
+        );
         const bool brute = nCells <= 40000;
 
         Info<< nl << "Mesh " << regions[meshi] << ": " << nCells
@@ -213,7 +217,10 @@ void immersedBodiesTests::testSolidFraction
                 const tensor Ainv = R & diagTensor(1/sqr(abc.x()), 1/sqr(abc.y()), 1/sqr(abc.z())) & R.T();
                 const point& X = pl.offset;
 
-                body.updateCells(mesh, cellRadius, periodicDomain(mesh), 0);
+                body.updateCells
+                (
+                    mesh, *cellTree, cellRadius, periodicDomain(mesh), 0
+                );
                 const DynamicList<label>& cells = body.cells();
                 const DynamicList<scalar>& fractions = body.fractions();
 

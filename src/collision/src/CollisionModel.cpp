@@ -191,22 +191,26 @@ int CollisionModel::subSteps(const std::vector<CollisionBody>& bodies, Scalar dt
                        b.velocity.norm() + b.angularVelocity.norm() * b.shape.maxSemiAxis());
     }
   }
-  const Scalar vRel = 2 * speed;
-  Scalar tc = contactTime;
-  if (vRel > 0) tc = std::min(tc, kPi * settings_.maxOverlap * aMin / vRel);
   // the contacts under way keep the contact time they started with
+  Scalar tc = contactTime;
   for (const auto& kv : contact_) tc = std::min(tc, kv.second.contactTime);
   if (share_) {
     std::vector<Scalar> all{tc};
     share_->minimum(all);  // the other processes' contacts
     tc = all[0];
   }
+  return subStepsFor(dt, tc, speed, aMin);
+}
+
+int CollisionModel::subStepsFor(Scalar dt, Scalar tc, Scalar speed, Scalar aMin) const {
+  // the fastest possible impact: twice the largest speed, the overlap cap
+  if (speed > 0) tc = std::min(tc, kPi * settings_.maxOverlap * aMin / (2 * speed));
   const Scalar n = std::ceil(dt * settings_.subStepsPerContact / tc - 1e-9);
   if (!(n <= settings_.maxSubSteps)) {
     throw TooManySubSteps("collision: " + std::to_string(n) +
-                             " body sub-steps would be needed in a step of " + std::to_string(dt) +
-                             " s (largest body speed " + std::to_string(speed) +
-                             "; maxSubSteps " + std::to_string(settings_.maxSubSteps) + ")");
+                          " body sub-steps would be needed in a step of " + std::to_string(dt) +
+                          " s (largest body speed " + std::to_string(speed) + "; maxSubSteps " +
+                          std::to_string(settings_.maxSubSteps) + ")");
   }
   return std::max(1, int(n));
 }
@@ -217,6 +221,21 @@ namespace {
 int rootOf(std::vector<int>& parent, int b) {
   while (parent[b] != b) b = parent[b] = parent[parent[b]];
   return b;
+}
+
+/// each body's sum of the pairs' forces on it (on second, minus on first),
+/// added in the order of the keys so that the sums do not depend on the
+/// maps' order (a model restored from its history sums to the same bits)
+void sumInKeyOrder(std::vector<std::pair<std::uint64_t, Vec3>>& forces, int n,
+                   std::vector<Vec3>& sums) {
+  std::sort(forces.begin(), forces.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  sums.assign(n, Vec3::Zero());
+  for (const auto& [k, f] : forces) {
+    const int i = PairKey::first(k);
+    const int j = PairKey::second(k);
+    if (i < n) sums[i] -= f;
+    if (j >= 0 && j < n) sums[j] += f;
+  }
 }
 
 }  // namespace
@@ -314,16 +333,7 @@ std::vector<Island> CollisionModel::islands(const std::vector<CollisionBody>& bo
   if (share_) share_->minimum(tc);
   for (std::size_t k = 0; k < out.size(); ++k) {
     Island& island = out[k];
-    if (!island.interacts) continue;
-    if (islandSpeed[k] > 0) tc[k] = std::min(tc[k], kPi * settings_.maxOverlap * islandMinAxis[k] / (2 * islandSpeed[k]));
-    const Scalar steps = std::ceil(dt * settings_.subStepsPerContact / tc[k] - 1e-9);
-    if (!(steps <= settings_.maxSubSteps)) {
-      throw TooManySubSteps("collision: " + std::to_string(steps) +
-                            " body sub-steps would be needed in a step of " + std::to_string(dt) +
-                            " s (largest body speed " + std::to_string(islandSpeed[k]) +
-                            "; maxSubSteps " + std::to_string(settings_.maxSubSteps) + ")");
-    }
-    island.subSteps = std::max(1, int(steps));
+    if (island.interacts) island.subSteps = subStepsFor(dt, tc[k], islandSpeed[k], islandMinAxis[k]);
   }
   return out;
 }
@@ -389,15 +399,7 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
   // history sums them to the same bits; its contact forces of the last call,
   // kept from that call's collective (or summed afresh after a restore)
   lastForces_.assign(lastDamping_.begin(), lastDamping_.end());
-  std::sort(lastForces_.begin(), lastForces_.end(),
-            [](const auto& x, const auto& y) { return x.first < y.first; });
-  lastDampingForce_.assign(n, Vec3::Zero());
-  for (const auto& [k, f] : lastForces_) {
-    const int i = PairKey::first(k);
-    const int j = PairKey::second(k);
-    if (i < n) lastDampingForce_[i] -= f;
-    if (j >= 0 && j < n) lastDampingForce_[j] += f;
-  }
+  sumInKeyOrder(lastForces_, n, lastDampingForce_);
   if (!lastContactValid_ || static_cast<int>(lastContactForce_.size()) != n) {
     contactSums(n, lastContactForce_);
     if (share_) {
@@ -552,14 +554,7 @@ void CollisionModel::contactSums(int n, std::vector<Vec3>& sums) const {
   std::vector<std::pair<std::uint64_t, Vec3>> forces;
   forces.reserve(contact_.size());
   for (const auto& [k, c] : contact_) forces.emplace_back(k, c.force);
-  std::sort(forces.begin(), forces.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  sums.assign(n, Vec3::Zero());
-  for (const auto& [k, f] : forces) {
-    const int i = PairKey::first(k);
-    const int j = PairKey::second(k);
-    if (i < n) sums[i] -= f;
-    if (j >= 0 && j < n) sums[j] += f;
-  }
+  sumInKeyOrder(forces, n, sums);
 }
 
 namespace {

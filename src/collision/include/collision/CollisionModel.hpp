@@ -365,6 +365,11 @@ class CollisionModel {
   /// each body's reach: half the largest activation gap it can take part in
   /// (centres_, radii_, reach_; of the active bodies only, if given)
   void bodyReach(const std::vector<CollisionBody>& bodies, const std::vector<char>* active = nullptr);
+  /// the sub-steps of a step dt for bodies of largest speed (plus rotation)
+  /// speed and smallest semi-axis aMin whose contacts last at least tc: a
+  /// contact, or their fastest possible impact, lasts subStepsPerContact of them
+  /// @throws TooManySubSteps beyond maxSubSteps
+  int subStepsFor(Scalar dt, Scalar tc, Scalar speed, Scalar aMin) const;
   /// does this process compute the pair (always without a work share)?
   bool owns(std::uint64_t k) const { return !share_ || share_->owns(k); }
   /// each body's contact force of this process's pairs in contact_ (the

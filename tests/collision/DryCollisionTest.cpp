@@ -416,7 +416,9 @@ TEST(DryCollision, TheSustainedLoadOverlapSetsTheRestingOverlap) {
     EXPECT_GT(resting.back(), 0) << fraction;
     // the spring is stiffened while the body creeps in (dF = k d(delta)):
     // the rest overlap exceeds the fraction of the cap that the rule aims at
-    if (fraction <= 0.5) EXPECT_LE(resting.back(), cap) << fraction;
+    if (fraction <= 0.5) {
+      EXPECT_LE(resting.back(), cap) << fraction;
+    }
   }
   std::printf("resting overlap / cap at 1/4, 1/2, 1: %.3f %.3f %.3f\n", resting[0] / cap,
               resting[1] / cap, resting[2] / cap);

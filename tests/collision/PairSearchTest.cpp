@@ -108,6 +108,43 @@ TEST(PairSearch, PeriodicAxesGiveTheMinimumImageOfEveryPair) {
   }
 }
 
+TEST(PairSearch, FlaggedFirstBodiesGiveTheirShareOfThePairs) {
+  // the bodies split among 3 "processes" by a flag each: every pair found by
+  // exactly the process that flags its first body, the union the full search;
+  // without and with periodic axes (3 cells per axis: a neighbour across the
+  // wrap; 2: the same cell on both sides)
+  std::mt19937 gen(5);
+  std::uniform_real_distribution<Scalar> unit(0, 1), rad(0.1, 0.5);
+  for (const Scalar side : {0.0, 2.1, 3.0}) {
+    const PeriodicBox box = side > 0 ? PeriodicBox(Vec3::Zero(), Vec3::Constant(side), {true, true, true})
+                                     : PeriodicBox();
+    std::vector<Vec3> c;
+    std::vector<Scalar> r;
+    for (int i = 0; i < 300; ++i) {
+      c.push_back((side > 0 ? side : 6.0) * Vec3(unit(gen), unit(gen), unit(gen)));
+      r.push_back(rad(gen));
+    }
+    r[0] = 0.5;
+    PairSearch search;
+    const auto all = sorted(search.find(c, r, box));
+    ASSERT_FALSE(all.empty());
+    std::vector<CandidatePair> united;
+    for (int rank = 0; rank < 3; ++rank) {
+      std::vector<char> mine(c.size());
+      for (std::size_t i = 0; i < c.size(); ++i) mine[i] = (i * 7 + 3) % 3 == std::size_t(rank);
+      const auto share = sorted(search.find(c, r, box, &mine));
+      for (const CandidatePair& p : share) EXPECT_TRUE(mine[p.first]) << "side " << side;
+      EXPECT_TRUE(std::adjacent_find(share.begin(), share.end()) == share.end()) << "side " << side;
+      united.insert(united.end(), share.begin(), share.end());
+    }
+    EXPECT_EQ(sorted(united), all) << "side " << side;
+  }
+  std::vector<char> tooFew(2);
+  PairSearch search;
+  EXPECT_THROW(search.find({Vec3::Zero(), Vec3::Ones(), Vec3::Zero()}, {1, 1, 1}, PeriodicBox(), &tooFew),
+               std::invalid_argument);
+}
+
 TEST(PairSearch, APeriodTooShortForTheBodiesIsRejected) {
   // radius 0.5 each: a pair reaches 1, so a period must exceed 2
   const PeriodicBox box(Vec3::Zero(), Vec3(1.9, 10, 10), {true, false, false});

@@ -86,6 +86,7 @@ void CollisionModel::clearHistory() {
   contact_.clear();
   lastDamping_.clear();
   lastContactValid_ = false;
+  lastDampingValid_ = false;
 }
 
 void CollisionModel::setWorkShare(std::shared_ptr<const WorkShare> share) {
@@ -171,6 +172,7 @@ void CollisionModel::setHistory(const std::vector<PairRecord>& records) {
                        r.tangentialSpring, r.tangentialSlip};
     }
     if (r.dampingForce.squaredNorm() > 0) lastDamping_[k] = r.dampingForce;
+    lastDampingValid_ = false;
   }
 }
 
@@ -264,12 +266,20 @@ std::vector<Island> CollisionModel::islands(const std::vector<CollisionBody>& bo
   std::vector<int> parent(n);
   for (int i = 0; i < n; ++i) parent[i] = i;
   std::vector<char> interacts(n, 0);
+  // the links: pairs that may meet (second >= 0) and bodies that may meet a
+  // wall (second -1); with a work share each process finds those of its own
+  // bodies (as first bodies) and every process joins them all
+  std::vector<std::pair<int, int>> links;
+  std::vector<char> own;
+  if (share_) {
+    own.resize(n);
+    for (int i = 0; i < n; ++i) own[i] = share_->ownsBody(i);
+  }
   bool oneIsland = false;
   try {
-    for (const CandidatePair& c : search_.find(centres_, grownRadii, box_)) {
+    for (const CandidatePair& c : search_.find(centres_, grownRadii, box_, share_ ? &own : nullptr)) {
       if (!bodies[c.first].movable && !bodies[c.second].movable) continue;
-      interacts[c.first] = interacts[c.second] = 1;
-      parent[rootOf(parent, c.first)] = rootOf(parent, c.second);
+      links.emplace_back(c.first, c.second);
     }
   } catch (const std::invalid_argument&) {
     // the margin makes the reach too long for the periodic box's single
@@ -277,15 +287,9 @@ std::vector<Island> CollisionModel::islands(const std::vector<CollisionBody>& bo
     // in one island, as without islands
     oneIsland = true;
   }
-  if (oneIsland) {
-    for (int i = 0; i < n; ++i) {
-      parent[i] = 0;
-      interacts[i] = n > 1;
-    }
-  }
   const Lubrication& wallLubrication = wall_->lubrication();
   for (int i = 0; i < n; ++i) {
-    if (!bodies[i].movable) continue;
+    if (!bodies[i].movable || (share_ && !own[i])) continue;
     const Scalar reach =
         std::max(wallLubrication.acts() ? wallLubrication.activationGap(
                                               bodies[i].shape.maxOfMaxCurvatureRadius(), kInf,
@@ -293,8 +297,44 @@ std::vector<Island> CollisionModel::islands(const std::vector<CollisionBody>& bo
                                         : Scalar(0),
                  film_ ? bodies[i].filmGap : Scalar(0));
     for (const PlaneWall& w : walls_) {
-      if (wallDistance(bodies[i].shape, w).distance <= reach + margin) interacts[i] = 1;
+      if (wallDistance(bodies[i].shape, w).distance <= reach + margin) {
+        links.emplace_back(i, -1);
+        break;
+      }
     }
+  }
+  // the bodies this process's pairs may use within the step
+  evaluated_.assign(share_ ? n : 0, 0);
+  for (const auto& [i, j] : links) {
+    if (!share_) break;
+    evaluated_[i] = 1;
+    if (j >= 0) evaluated_[j] = 1;
+  }
+  if (share_) {
+    std::vector<int> flat;
+    flat.reserve(2 * links.size());
+    for (const auto& [i, j] : links) flat.insert(flat.end(), {i, j});
+    std::vector<char> bytes(flat.size() * sizeof(int));
+    if (!flat.empty()) std::memcpy(bytes.data(), flat.data(), bytes.size());
+    const std::vector<char> all = share_->allGather(bytes);
+    flat.resize(all.size() / sizeof(int));
+    if (!flat.empty()) std::memcpy(flat.data(), all.data(), all.size());
+    links.clear();
+    for (std::size_t k = 0; k + 1 < flat.size(); k += 2) links.emplace_back(flat[k], flat[k + 1]);
+  }
+  for (const auto& [i, j] : links) {
+    interacts[i] = 1;
+    if (j < 0) continue;
+    interacts[j] = 1;
+    parent[rootOf(parent, i)] = rootOf(parent, j);
+  }
+  if (oneIsland) {
+    // (every process met the same periodic box and radii: all fall back)
+    for (int i = 0; i < n; ++i) {
+      parent[i] = 0;
+      interacts[i] = n > 1;
+    }
+    if (share_) evaluated_.assign(n, 1);
   }
 
   // the islands in the order of their first bodies, each body ascending
@@ -346,20 +386,36 @@ void CollisionModel::checkIslands(const std::vector<CollisionBody>& bodies,
     for (const int b : islands[k].bodies) islandOf[b] = static_cast<int>(k);
   }
   bodyReach(bodies);
-  for (const CandidatePair& c : search_.find(centres_, radii_, box_)) {
+  std::vector<char> own;
+  if (share_) {
+    own.resize(n);
+    for (int i = 0; i < n; ++i) own[i] = share_->ownsBody(i);
+  }
+  // the first pair (of this process's) whose grown bodies meet across islands,
+  // or, with a work share, with a body this process did not evaluate
+  std::vector<Scalar> found{kInf, kInf};
+  for (const CandidatePair& c : search_.find(centres_, radii_, box_, share_ ? &own : nullptr)) {
     const int i = c.first, j = c.second;
-    if (islandOf[i] == islandOf[j] || (!bodies[i].movable && !bodies[j].movable)) continue;
+    if (!bodies[i].movable && !bodies[j].movable) continue;
+    const bool unseen = share_ && !(evaluated_[i] && evaluated_[j]);
+    if (islandOf[i] == islandOf[j] && !unseen) continue;
     const Vec3 shift = c.image != PeriodicBox::kNoImage ? box_.shift(c.image) : Vec3::Zero();
     if (overlap_.test(grown(bodies[i].shape, reach_[i]),
                       grown(bodies[j].shape, reach_[j]).translatedBy(shift)) ==
         ellipsoids::OverlapStatus::separated) {
       continue;
     }
+    if (std::make_pair(Scalar(i), Scalar(j)) < std::make_pair(found[0], found[1])) found = {Scalar(i), Scalar(j)};
+  }
+  // (every process stops alike: the smallest pair of any)
+  if (share_) share_->minimum(found);
+  if (std::isfinite(found[0])) {
     throw std::runtime_error(
-        "collision: bodies " + std::to_string(i) + " and " + std::to_string(j) +
-        " came within reach of each other within a step from different islands (bodies that can"
-        " meet within a step are sub-stepped together; their speeds grew beyond the islands'"
-        " margin of twice the largest speed): reduce the time step");
+        "collision: bodies " + std::to_string(int(found[0])) + " and " + std::to_string(int(found[1])) +
+        " came within reach of each other within a step from different islands, or (with a work share)"
+        " without being linked at its start (bodies"
+        " that can meet within a step are sub-stepped together; their speeds grew beyond the"
+        " islands' margin of twice the largest speed): reduce the time step");
   }
 }
 
@@ -386,10 +442,13 @@ void CollisionModel::bodyReach(const std::vector<CollisionBody>& bodies,
 
 void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar contactTime,
                             Scalar subDt, std::vector<Vec3>& force, std::vector<Vec3>& torque,
-                            bool recordDamping, Scalar elapsed, const std::vector<char>* active) {
+                            bool recordDamping, Scalar elapsed, const std::vector<char>* active,
+                            const std::vector<char>* evaluated) {
   elapsed_ = elapsed < 0 ? subDt : elapsed;
   const int n = static_cast<int>(bodies.size());
-  require(n <= PairKey::kMaxBodies, "collision: at most " + std::to_string(PairKey::kMaxBodies) + " bodies");
+  if (n > PairKey::kMaxBodies) {
+    require(false, "collision: at most " + std::to_string(PairKey::kMaxBodies) + " bodies");
+  }
   force.assign(n, Vec3::Zero());
   torque.assign(n, Vec3::Zero());
   recordDamping_ = recordDamping;
@@ -398,8 +457,11 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
   // summed in the order of the pairs' keys so that a model restored from its
   // history sums them to the same bits; its contact forces of the last call,
   // kept from that call's collective (or summed afresh after a restore)
-  lastForces_.assign(lastDamping_.begin(), lastDamping_.end());
-  sumInKeyOrder(lastForces_, n, lastDampingForce_);
+  if (!lastDampingValid_ || static_cast<int>(lastDampingForce_.size()) != n) {
+    lastForces_.assign(lastDamping_.begin(), lastDamping_.end());
+    sumInKeyOrder(lastForces_, n, lastDampingForce_);
+    lastDampingValid_ = true;
+  }
   if (!lastContactValid_ || static_cast<int>(lastContactForce_.size()) != n) {
     contactSums(n, lastContactForce_);
     if (share_) {
@@ -412,29 +474,44 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
   const Lubrication& wallLubrication = wall_->lubrication();
   const bool films = film_ != nullptr;
   auto on = [active](int b) { return !active || (*active)[b]; };
-  require(!active || static_cast<int>(active->size()) == n,
-          "collision: the active bodies' flags are not one per body");
+  if ((active && static_cast<int>(active->size()) != n) ||
+      (evaluated && static_cast<int>(evaluated->size()) != n)) {
+    require(false, "collision: the active or evaluated bodies' flags are not one per body");
+  }
+  // the bodies searched: the active ones (of those this process evaluates)
+  const std::vector<char>* searched = active;
+  if (evaluated) {
+    searched_.resize(n);
+    for (int i = 0; i < n; ++i) searched_[i] = on(i) && (*evaluated)[i];
+    searched = &searched_;
+  }
+  auto inSearch = [searched](int b) { return !searched || (*searched)[b]; };
 
-  // the active bodies, their reach and bounding spheres for the search, and
-  // the prefilter's grown bodies and their axis-aligned boxes (half extents
-  // sqrt(P_kk)), once per body (not per pair)
-  bodyReach(bodies, active);
+  // the active bodies, their reach and bounding spheres for the search (with
+  // a work share, the flags of the first bodies of this process's pairs)
+  bodyReach(bodies, searched);
   activeIndex_.clear();
   activeCentres_.clear();
   activeRadii_.clear();
-  grown_.clear();
-  halfExtent_.resize(n);
+  activeFirsts_.clear();
   for (int i = 0; i < n; ++i) {
-    if (!on(i)) {
-      grown_.push_back(bodies[i].shape);  // (a place holder: not used)
-      continue;
-    }
+    if (!inSearch(i)) continue;
     activeIndex_.push_back(i);
     activeCentres_.push_back(centres_[i]);
     activeRadii_.push_back(radii_[i]);
-    grown_.push_back(grown(bodies[i].shape, reach_[i]));
-    halfExtent_[i] = grown_[i].shapeMatrix().diagonal().cwiseSqrt();
+    if (share_) activeFirsts_.push_back(share_->ownsBody(i));
   }
+  // the prefilter's grown bodies and their axis-aligned boxes (half extents
+  // sqrt(P_kk)), once per body of the pairs found (not per pair)
+  if (n > 0 && static_cast<int>(grown_.size()) != n) grown_.assign(n, bodies[0].shape);
+  halfExtent_.resize(n);
+  grownReady_.assign(n, 0);
+  auto prepareGrown = [&](int i) {
+    if (grownReady_[i]) return;
+    grown_[i] = grown(bodies[i].shape, reach_[i]);
+    halfExtent_[i] = grown_[i].shapeMatrix().diagonal().cwiseSqrt();
+    grownReady_[i] = 1;
+  };
   nextDirection_.clear();
   nextContact_.clear();
   if (active) {
@@ -448,12 +525,14 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
     }
   }
 
-  const auto& pairs = search_.find(activeCentres_, activeRadii_, box_);
+  const auto& pairs = search_.find(activeCentres_, activeRadii_, box_, share_ ? &activeFirsts_ : nullptr);
   statistics_.candidatePairs += static_cast<long>(pairs.size());
   for (const CandidatePair& candidate : pairs) {
     const int i = activeIndex_[candidate.first], j = activeIndex_[candidate.second];
     if (!bodies[i].movable && !bodies[j].movable) continue;
-    if (!owns(key(i, j, candidate.image))) continue;
+    // (the search gave this process's pairs only)
+    prepareGrown(i);
+    prepareGrown(j);
     // body j through its image (a copy only for a shifted image)
     const bool shifted = candidate.image != PeriodicBox::kNoImage;
     const Vec3 shift = shifted ? box_.shift(candidate.image) : Vec3::Zero();
@@ -508,7 +587,7 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
   }
 
   for (int i = 0; i < n; ++i) {
-    if (!bodies[i].movable || !on(i)) continue;
+    if (!bodies[i].movable || !inSearch(i)) continue;
     for (int w = 0; w < static_cast<int>(walls_.size()); ++w) {
       if (!owns(key(i, -1 - w))) continue;
       const WallDistance d = wallDistance(bodies[i].shape, walls_[w]);
@@ -535,14 +614,14 @@ void CollisionModel::forces(const std::vector<CollisionBody>& bodies, Scalar con
   // the contact sums of the next call's load rule, with this call's forces
   // in the one collective of the call
   contactSums(n, lastContactForce_);
-  if (share_) combine(force, torque, lastContactForce_, recordDamping);
-  lastContactValid_ = true;
+  // the damping solve sweeps the pairs in the order of their keys, on every
+  // process alike: each process sorts its own, combine() merges them
   if (recordDamping) {
-    // the damping solve sweeps the pairs in the order of their keys, on
-    // every process alike
     std::sort(damped_.begin(), damped_.end(),
               [](const DampedPair& a, const DampedPair& b) { return a.key < b.key; });
   }
+  if (share_) combine(force, torque, lastContactForce_, recordDamping);
+  lastContactValid_ = true;
   for (int i = 0; i < n; ++i) {
     if (!force[i].allFinite() || !torque[i].allFinite()) {
       throw std::runtime_error("collision: non-finite collision force on body " + std::to_string(i));
@@ -616,7 +695,11 @@ void CollisionModel::combine(std::vector<Vec3>& force, std::vector<Vec3>& torque
         for (int c = 0; c < 3; ++c) (*v)[i][c] += take<Scalar>(all, at);
       }
     }
+    const auto middle = static_cast<std::ptrdiff_t>(damped_.size());
     for (std::int64_t k = 0; k < pairs; ++k) damped_.push_back(take<DampedPair>(all, at));
+    // (each process's pairs came sorted by key)
+    std::inplace_merge(damped_.begin(), damped_.begin() + middle, damped_.end(),
+                       [](const DampedPair& a, const DampedPair& b) { return a.key < b.key; });
   }
   if (at != all.size()) throw std::runtime_error("collision: the processes' records do not add up");
 }
@@ -863,13 +946,18 @@ void CollisionModel::dampingForces(const std::vector<CollisionBody>& bodies,
                                    std::vector<Vec3>& force, std::vector<Vec3>& torque,
                                    const std::vector<char>* active) {
   const std::size_t n = bodies.size();
-  require(endVelocity.size() == n && endAngularVelocity.size() == n,
-          "dampingForces: " + std::to_string(n) + " bodies but " + std::to_string(endVelocity.size()) +
-              " velocities and " + std::to_string(endAngularVelocity.size()) + " angular velocities");
-  require(std::isfinite(subDt) && subDt > 0,
-          "dampingForces: sub-step " + std::to_string(subDt) + " must be > 0");
+  // (each message built only on failure: called once per sub-step)
+  if (endVelocity.size() != n || endAngularVelocity.size() != n) {
+    require(false, "dampingForces: " + std::to_string(n) + " bodies but " +
+                       std::to_string(endVelocity.size()) + " velocities and " +
+                       std::to_string(endAngularVelocity.size()) + " angular velocities");
+  }
+  if (!(std::isfinite(subDt) && subDt > 0)) {
+    require(false, "dampingForces: sub-step " + std::to_string(subDt) + " must be > 0");
+  }
   force.assign(n, Vec3::Zero());
   torque.assign(n, Vec3::Zero());
+  lastDampingValid_ = false;
   if (active) {
     // the damping forces of the pairs that do not take this sub-step stay
     for (auto it = lastDamping_.begin(); it != lastDamping_.end();) {
@@ -881,15 +969,17 @@ void CollisionModel::dampingForces(const std::vector<CollisionBody>& bodies,
   if (damped_.empty()) return;
   bool films = false;
   for (const DampedPair& p : damped_) {
-    require(p.first >= 0 && std::size_t(p.first) < n &&
-                (p.second < 0 ? -1 - p.second < static_cast<int>(walls_.size())
-                              : std::size_t(p.second) < n),
-            "dampingForces: the recorded pairs are of other bodies (call forces() first)");
+    if (!(p.first >= 0 && std::size_t(p.first) < n &&
+          (p.second < 0 ? -1 - p.second < static_cast<int>(walls_.size())
+                        : std::size_t(p.second) < n))) {
+      require(false, "dampingForces: the recorded pairs are of other bodies (call forces() first)");
+    }
     films = films || p.film > 0;
   }
-  require(!films || (referenceVelocity.size() == n && referenceAngularVelocity.size() == n),
-          "dampingForces: the film correction needs the reference velocities of all " +
-              std::to_string(n) + " bodies");
+  if (films && (referenceVelocity.size() != n || referenceAngularVelocity.size() != n)) {
+    require(false, "dampingForces: the film correction needs the reference velocities of all " +
+                       std::to_string(n) + " bodies");
+  }
   ++statistics_.dampingSolves;
 
   std::vector<Vec3> v = endVelocity, w = endAngularVelocity;

@@ -36,9 +36,11 @@ Scalar LubricationParameters::resolvedGapRatio(Scalar a1, Scalar a2, Scalar cell
   const bool wall = !std::isfinite(a2);
   const Scalar cells = wall ? wallResolvedGapCells : pairResolvedGapCells;
   if (cells == 0) return 0;
-  require(cellSize > 0, std::string(wall ? "wallResolvedGapCells" : "pairResolvedGapCells") +
-                            " needs the bodies' cell size (> 0), given " +
-                            Range::number(cellSize));
+  // (the message is built only on failure: this runs once per lubricated pair and evaluation)
+  if (!(cellSize > 0)) {
+    require(false, std::string(wall ? "wallResolvedGapCells" : "pairResolvedGapCells") +
+                       " needs the bodies' cell size (> 0), given " + Range::number(cellSize));
+  }
   return cells * cellSize / (wall ? a1 : 0.5 * (a1 + a2));
 }
 

@@ -9,12 +9,17 @@ namespace collision {
 
 const std::vector<CandidatePair>& PairSearch::find(const std::vector<Vec3>& centres,
                                                    const std::vector<Scalar>& radii,
-                                                   const PeriodicBox& box) {
+                                                   const PeriodicBox& box,
+                                                   const std::vector<char>* firsts) {
   pairs_.clear();
   const int n = static_cast<int>(centres.size());
   if (radii.size() != centres.size()) {
     throw std::invalid_argument("PairSearch: " + std::to_string(centres.size()) + " centres but " +
                                 std::to_string(radii.size()) + " radii");
+  }
+  if (firsts && firsts->size() != centres.size()) {
+    throw std::invalid_argument("PairSearch: " + std::to_string(centres.size()) + " centres but " +
+                                std::to_string(firsts->size()) + " flags of first bodies");
   }
   if (n < 2) return pairs_;
   Scalar rMax = 0;
@@ -123,6 +128,44 @@ const std::vector<CandidatePair>& PairSearch::find(const std::vector<Vec3>& cent
     }
     pairs_.push_back({i, j, code});
   };
+  auto cellIndex = [&](const int idx[3]) { return (idx[0] * dims_[1] + idx[1]) * dims_[2] + idx[2]; };
+  // the cell of an offset from cell c, or -1 outside a non-periodic grid
+  auto neighbour = [&](int c, const int o[3]) {
+    const int cIdx[3] = {c / (dims_[1] * dims_[2]), (c / dims_[2]) % dims_[1], c % dims_[2]};
+    int nIdx[3];
+    for (int d = 0; d < 3; ++d) {
+      nIdx[d] = cIdx[d] + o[d];
+      if (box.periodic(d)) {
+        nIdx[d] = (nIdx[d] + dims_[d]) % dims_[d];
+      } else if (nIdx[d] < 0 || nIdx[d] >= dims_[d]) {
+        return -1;
+      }
+    }
+    return cellIndex(nIdx);
+  };
+  if (firsts) {
+    // each flagged body against the bodies of higher index in its cell and
+    // its 26 neighbours (a cell met twice, on a periodic axis of fewer than 3
+    // cells, is visited once)
+    std::vector<int> seen;
+    for (int s = 0; s < n; ++s) {
+      const int i = sorted_[s];
+      if (!(*firsts)[i]) continue;
+      seen.clear();
+      for (int a = -1; a <= 1; ++a)
+        for (int b = -1; b <= 1; ++b)
+          for (int c = -1; c <= 1; ++c) {
+            const int o[3] = {a, b, c};
+            const int nc = neighbour(cellOf_[i], o);
+            if (nc < 0 || std::find(seen.begin(), seen.end(), nc) != seen.end()) continue;
+            seen.push_back(nc);
+            for (int t = cellStart_[nc]; t < cellStart_[nc + 1]; ++t) {
+              if (sorted_[t] > i) test(s, t);
+            }
+          }
+    }
+    return pairs_;
+  }
   // each occupied cell with itself and its 13 "forward" neighbours (half of
   // the 26): every pair of cells, hence every pair of bodies, once
   static const int kForward[13][3] = {{0, 0, 1},  {0, 1, -1},  {0, 1, 0},  {0, 1, 1},  {1, -1, -1},
@@ -133,20 +176,9 @@ const std::vector<CandidatePair>& PairSearch::find(const std::vector<Vec3>& cent
     if (s0 == s1) continue;
     for (int s = s0; s < s1; ++s)
       for (int t = s + 1; t < s1; ++t) test(s, t);
-    const int cIdx[3] = {c / (dims_[1] * dims_[2]), (c / dims_[2]) % dims_[1], c % dims_[2]};
     for (const auto& o : kForward) {
-      int nIdx[3];
-      bool inside = true;
-      for (int d = 0; d < 3 && inside; ++d) {
-        nIdx[d] = cIdx[d] + o[d];
-        if (box.periodic(d)) {
-          nIdx[d] = (nIdx[d] + dims_[d]) % dims_[d];
-        } else {
-          inside = nIdx[d] >= 0 && nIdx[d] < dims_[d];
-        }
-      }
-      if (!inside) continue;
-      const int nc = (nIdx[0] * dims_[1] + nIdx[1]) * dims_[2] + nIdx[2];
+      const int nc = neighbour(c, o);
+      if (nc < 0) continue;
       const int t0 = cellStart_[nc], t1 = cellStart_[nc + 1];
       if (t0 == t1) continue;
       if (nc == c) {

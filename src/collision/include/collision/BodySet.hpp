@@ -49,7 +49,8 @@ class BodySet {
   virtual void advance(std::size_t i, BodyState& s, Scalar t, Scalar dt, const Vec3& fc,
                        const Vec3& tc) const = 0;
 
-  /// Body i took the step from start to end under fc, tc (e.g. to keep its accelerations).
+  /// Body i took the step from start to end under fc, tc (e.g. to keep its
+  /// accelerations); with a work share called on the process that owns body i.
   virtual void accept(std::size_t /*i*/, const BodyState& /*start*/, const BodyState& /*end*/,
                       Scalar /*dt*/, const Vec3& /*fc*/, const Vec3& /*tc*/) {}
 };

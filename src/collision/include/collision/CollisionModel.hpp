@@ -249,9 +249,18 @@ class CollisionModel {
    */
   std::vector<Island> islands(const std::vector<CollisionBody>& bodies, Scalar dt, Scalar contactTime);
   /**
+   * With a work share: the bodies (flags, one per body) that this process's
+   * pairs may use within the step of the last islands() call, its own bodies
+   * linked to others or to a wall and their partners; the sub-stepper builds
+   * and advances trial states of these only. Empty without a work share.
+   */
+  const std::vector<char>& evaluatedBodies() const { return evaluated_; }
+  /**
    * After the islands of a step were advanced apart: throws std::runtime_error
    * naming two bodies of different islands whose grown bodies (their reach)
-   * now meet, which the islands' margin should have ruled out.
+   * now meet, which the islands' margin should have ruled out (with a work
+   * share also two bodies that were not linked at the start of the step; on
+   * every process alike: one collective).
    */
   void checkIslands(const std::vector<CollisionBody>& bodies, const std::vector<Island>& islands);
 
@@ -270,9 +279,13 @@ class CollisionModel {
    */
   /// active: the bodies that take this sub-step (nullptr: all; a union of
   /// islands): only their pairs are evaluated, the others' histories are kept.
+  /// evaluated (with a work share: evaluatedBodies(), or nullptr): only these
+  /// bodies are read (the others' entries of bodies may be stale); the
+  /// process's pairs lie among them.
   void forces(const std::vector<CollisionBody>& bodies, Scalar contactTime, Scalar subDt,
               std::vector<Vec3>& force, std::vector<Vec3>& torque, bool recordDamping = true,
-              Scalar elapsed = -1, const std::vector<char>* active = nullptr);
+              Scalar elapsed = -1, const std::vector<char>* active = nullptr,
+              const std::vector<char>* evaluated = nullptr);
 
   /// The damped pairs recorded by the last forces() call that recorded them.
   const std::vector<DampedPair>& dampedPairs() const { return damped_; }
@@ -420,7 +433,7 @@ class CollisionModel {
   std::vector<Vec3> centres_;
   std::vector<Scalar> radii_;
   std::vector<Scalar> reach_;
-  std::vector<ellipsoids::Ellipsoid> grown_;
+  std::vector<ellipsoids::Ellipsoid> grown_;  ///< forces(): valid where grownReady_
   std::vector<Vec3> halfExtent_;  ///< axis-aligned half extents of grown_
   /// warm-start direction of each pair seen last call
   std::unordered_map<std::uint64_t, Vec3> direction_, nextDirection_;
@@ -442,6 +455,7 @@ class CollisionModel {
   /// false), the damping sums from lastDamping_ at the start of a call
   std::vector<Vec3> lastContactForce_, lastDampingForce_;
   bool lastContactValid_ = false;
+  bool lastDampingValid_ = false;  ///< lastDampingForce_ sums lastDamping_
   /// forces() scratch: (pair key, force on second), sorted by key
   std::vector<std::pair<std::uint64_t, Vec3>> lastForces_;
   std::vector<Vec3> contactScratch_;
@@ -449,6 +463,10 @@ class CollisionModel {
   std::vector<int> activeIndex_;  ///< forces(): the active bodies (search order)
   std::vector<Vec3> activeCentres_;
   std::vector<Scalar> activeRadii_;
+  std::vector<char> activeFirsts_;  ///< forces(): the active bodies this process owns
+  std::vector<char> grownReady_;
+  std::vector<char> evaluated_;  ///< evaluatedBodies()
+  std::vector<char> searched_;   ///< forces(): the active bodies it evaluates
   std::vector<Scalar> impulse_;  ///< dampingForces(): the pairs' normal impulses
   std::vector<Scalar> pairInverseMass_, pairReferenceSpeed_;  ///< dampingForces() scratch
 };

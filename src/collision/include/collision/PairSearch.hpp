@@ -12,7 +12,9 @@
  * cell and its 13 forward neighbours). Along a periodic axis the grid spans
  * the period exactly and wraps around; the bodies are binned by their
  * wrapped centres, and the shift reported is the one that applies to the
- * centres given. Memory is reused from call to call.
+ * centres given. Memory is reused from call to call. With flags for the
+ * first bodies, each flagged body's cell and its 26 neighbours are visited
+ * for the bodies of higher index.
  */
 #ifndef COLLISION_PAIRSEARCH_HPP
 #define COLLISION_PAIRSEARCH_HPP
@@ -43,12 +45,18 @@ class PairSearch {
    * The candidate pairs, each once, in an order that depends only on the
    * input (the same on every rank and after a restart; not sorted).
    * @param box the periodic axes (none by default)
+   * @param firsts if given (one flag per body): only the pairs whose first
+   *        body is flagged, found from those bodies' cells and their 26
+   *        neighbours (a process's share of the pairs, WorkShare: the cost
+   *        beyond the O(N) binning is that of the flagged bodies)
    * @throws std::invalid_argument on a non-finite centre, a radius that is
-   *         not > 0, or radii too large for the periods (PeriodicBox::checkRange)
+   *         not > 0, radii too large for the periods (PeriodicBox::checkRange),
+   *         or flags that are not one per body
    */
   const std::vector<CandidatePair>& find(const std::vector<Vec3>& centres,
                                          const std::vector<Scalar>& radii,
-                                         const PeriodicBox& box = PeriodicBox());
+                                         const PeriodicBox& box = PeriodicBox(),
+                                         const std::vector<char>* firsts = nullptr);
 
  private:
   int dims_[3] = {1, 1, 1};

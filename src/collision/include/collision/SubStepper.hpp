@@ -16,7 +16,14 @@
  * stepIslands() takes a fluid step island by island (CollisionModel::islands):
  * the islands that need the same number of sub-steps step together, so that
  * a body far from any other takes the fewest and a contact's island the
- * sub-steps its contact needs.
+ * sub-steps its contact needs. With a work share, each process builds the
+ * trial states of the bodies its own pairs use (evaluatedBodies()) and of
+ * the damped pairs' bodies; the collision forces of every body reach every
+ * process through the model's collectives; each process advances the bodies
+ * it owns to the end of the sub-step and one collective per sub-step gives
+ * every process every body's end state; with damped pairs, one more gives
+ * every process what the damping solve needs of their bodies, each from
+ * its owner.
  * validation/dryCollisions measures the scheme's restitution error against
  * subStepsPerContact.
  */
@@ -26,6 +33,7 @@
 #include "collision/BodySet.hpp"
 #include "collision/CollisionModel.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace collision {
@@ -39,12 +47,21 @@ class SubStepper {
    * @param referenceStates the bodies' states whose velocities the flow's
    *        hydrodynamic force responded to (the film correction; may be
    *        empty when no body has a film gap)
+   * @param active the bodies that take the sub-step (nullptr: all)
+   * @param evaluated with a work share, the model's evaluatedBodies(): the
+   *        trial states are built for these only (and for the bodies of the
+   *        damped pairs)
+   * @param advanced the active bodies whose end states this process computes
+   *        (nullptr: all; with a work share, those it owns: the caller
+   *        gathers the others')
    * @throws std::invalid_argument if states has another size than bodies
    */
   void step(BodySet& bodies, std::vector<BodyState>& states, CollisionModel* model,
             Scalar contactTime, Scalar t, Scalar dt,
             const std::vector<BodyState>& referenceStates = {},
-            const std::vector<char>* active = nullptr);
+            const std::vector<char>* active = nullptr,
+            const std::vector<char>* evaluated = nullptr,
+            const std::vector<char>* advanced = nullptr);
 
   /**
    * Advance states from t over the fluid step dt island by island: each
@@ -78,6 +95,16 @@ class SubStepper {
   std::vector<int> bodySubSteps_;
   std::vector<Island> islands_;
   std::vector<char> active_;
+  std::vector<char> damped_;  ///< step(): the bodies of the damped pairs
+  std::vector<char> owned_;   ///< stepIslands() with a work share: this process's bodies
+
+  /// every process's owned active bodies' end states to every process (one collective)
+  void gatherStates(const WorkShare& share, std::vector<BodyState>& states);
+  /// what the damping solve needs of the damped pairs' bodies (end velocities,
+  /// mass, inverse inertia, mobility) from their owners (advanced) to every
+  /// process (one collective)
+  void gatherDampedBodies(const WorkShare& share, const std::vector<char>& advanced,
+                          const std::function<bool(std::size_t)>& on);
 };
 
 }  // namespace collision

@@ -5,10 +5,13 @@
  *        process, and the processes' results are combined with one
  *        collective per evaluation.
  *
- * A pair's owner is a hash of its key (PairKey) modulo the number of
- * processes: the same on every process and for the pair's whole life, so its
- * warm start and contact history stay on the process that uses them, and the
- * pairs spread evenly whatever the bodies' positions. The collision core has
+ * A body's owner is a hash of its index modulo the number of processes, a
+ * pair's the owner of its first body (the smaller index; a body's for its
+ * wall pairs): the same on every process and for the pair's whole life, so
+ * its warm start and contact history stay on the process that uses them, the
+ * pairs spread evenly whatever the bodies' positions, and a process finds its
+ * pairs from its own bodies (PairSearch's first-body flags) and needs the
+ * states of those and their neighbours only. The collision core has
  * no MPI: a solver supplies the collectives (the OpenFOAM module's
  * pstreamWorkShare). Every process calls them in the same order, with the
  * same bodies.
@@ -38,7 +41,10 @@ class WorkShare {
   /// each entry the smallest of the processes' values of it, on every process (collective)
   virtual void minimum(std::vector<Scalar>& values) const = 0;
 
-  /// the process that owns the pair with this key
+  /// the process that owns body i (>= 0)
+  int bodyOwner(int i) const;
+  bool ownsBody(int i) const { return bodyOwner(i) == rank(); }
+  /// the process that owns the pair with this key: its first body's
   int owner(std::uint64_t key) const;
   bool owns(std::uint64_t key) const { return owner(key) == rank(); }
 };

@@ -134,21 +134,7 @@ TEST(WorkShare, ProcessesAgreeWithEachOtherAndWithOneProcessAndShareTheDistances
   ASSERT_GT(alone.islands, 1u);  // the islands differ in their sub-steps
 
   constexpr int P = 3;
-  ThreadWorkShare::Group exchange(P);
-  std::vector<Settled> runs(P);
-  std::vector<std::string> errors(P);
-  std::vector<std::thread> threads;
-  for (int r = 0; r < P; ++r) {
-    threads.emplace_back([&, r] {
-      try {
-        runs[r] = settle(std::make_shared<ThreadWorkShare>(exchange, r));
-      } catch (const std::exception& e) {
-        errors[r] = e.what();  // (the others would wait: a failure here hangs, then fails)
-      }
-    });
-  }
-  for (std::thread& t : threads) t.join();
-  for (int r = 0; r < P; ++r) ASSERT_TRUE(errors[r].empty()) << "process " << r << ": " << errors[r];
+  const std::vector<Settled> runs = ThreadWorkShare::runRanks<Settled>(P, settle);
 
   // every process ends with the same bodies, bit for bit
   for (int r = 1; r < P; ++r) {
@@ -243,23 +229,9 @@ TEST(WorkShare, EachProcessBuildsAndAdvancesAboutItsShareOfTheBodies) {
   const Run alone = run(nullptr);
   ASSERT_GT(alone.contacts, 10 * kPairs);  // every pair met
   constexpr int P = 3;
-  ThreadWorkShare::Group exchange(P);
-  std::vector<Run> runs(P);
-  std::vector<std::string> errors(P);
-  std::vector<std::thread> threads;
-  for (int r = 0; r < P; ++r) {
-    threads.emplace_back([&, r] {
-      try {
-        runs[r] = run(std::make_shared<ThreadWorkShare>(exchange, r));
-      } catch (const std::exception& e) {
-        errors[r] = e.what();
-      }
-    });
-  }
-  for (std::thread& t : threads) t.join();
+  const std::vector<Run> runs = ThreadWorkShare::runRanks<Run>(P, run);
   const long perStep = 2 * static_cast<long>(bodies.size()) * 40;  // the builds of islands and checks
   for (int r = 0; r < P; ++r) {
-    ASSERT_TRUE(errors[r].empty()) << "process " << r << ": " << errors[r];
     const double builds = double(runs[r].builds - perStep) / (alone.builds - perStep);
     const double advances = double(runs[r].advances) / alone.advances;
     std::cout << "[ info ] process " << r << " of " << P << ": trial-state builds " << builds

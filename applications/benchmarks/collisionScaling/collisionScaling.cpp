@@ -31,7 +31,9 @@
  * grows by up to half when the other core works (shared caches and memory),
  * and the ratios compare like with like. Printed (and written to --out): per N and P the busiest rank's CPU
  * time per step, its ratio to one rank's, the mean over the ranks, the
- * distances of the busiest rank over all, the sub-steps and evaluations.
+ * distances of the busiest rank over all, the sub-steps and evaluations; and
+ * the heap bytes per body that one rank's sub-steps hold (glibc's mallinfo2
+ * around a separate 3-step serial run: every rank holds these for every body).
  */
 #include "collision/FilmCorrection.hpp"
 #include "collision/PairModel.hpp"
@@ -41,6 +43,7 @@
 #include "collision/WallModel.hpp"
 #include "packing/RandomSequentialAddition.hpp"
 
+#include <malloc.h>
 #include <time.h>
 
 #include <algorithm>
@@ -195,6 +198,30 @@ RankRun run(const Scene& s, int steps, std::shared_ptr<const WorkShare> share) {
   return r;
 }
 
+/// The heap bytes a rank's collision sub-steps hold per body (glibc's
+/// mallinfo2: the bytes in use after three steps less those before the
+/// model, sub-stepper and states were made; one thread, nothing else allocating).
+double bytesPerBody(const Scene& s) {
+  const auto inUse = [] {
+    const struct mallinfo2 m = mallinfo2();
+    return double(m.uordblks) + double(m.hblkhd);
+  };
+  const double before = inUse();
+  double after = 0;
+  {
+    DraggedBodies set(s.bodies);
+    CollisionModel model = makeModel(s.box);
+    SubStepper stepper;
+    std::vector<BodyState> states(s.bodies.begin(), s.bodies.end());
+    for (int k = 0; k < 3; ++k) {
+      const std::vector<BodyState> reference(states);
+      stepper.stepIslands(set, states, model, kContactSteps * kDt, k * kDt, kDt, 1, reference);
+    }
+    after = inUse();
+  }
+  return (after - before) / s.bodies.size();
+}
+
 std::vector<int> integers(const std::string& list, const std::string& option) {
   std::istringstream in(list);
   std::vector<int> out;
@@ -255,35 +282,27 @@ int main(int argc, char** argv) {
     }
     const std::vector<int> counts = integers(bodyList, "--bodies");
     const std::vector<int> ranks = integers(rankList, "--ranks");
-    std::ostringstream csv;
+    std::ostringstream csv, memory;
+    memory << "\nHeap bytes per body of one rank's collision sub-steps (mallinfo2, after 3 steps):\n\n"
+              "| bodies | bytes per body |\n|---|---|\n";
     csv << "bodies,ranks,rank,cpu_per_step_s,distances,evaluated_fraction,evaluations,sub_steps\n";
     std::cout << "| bodies | P | busiest rank CPU s/step | over 1 rank | mean over ranks | "
                  "busiest rank's distances | bodies evaluated (busiest) | evaluations/step | "
                  "sub-steps/step | max difference to 1 rank |\n|---|---|---|---|---|---|---|---|---|---|\n";
     for (const int n : counts) {
       const Scene s = scene(n);
+      memory << "| " << n << " | " << std::lround(bytesPerBody(s)) << " |\n";
       const int timed = steps - kUntimedSteps;
       RankRun serial;
       double serialCpu = 0;
       for (const int P : ranks) {
-        ThreadWorkShare::Group group(P);
         // one rank runs as two independent copies at once, so that every
         // run keeps both cores of the machine busy (the CPU time of a thread
         // grows when the other core works: shared caches and memory)
-        const int copies = P == 1 ? 2 : P;
-        std::vector<RankRun> runs(copies);
-        std::vector<std::string> errors(copies);
-        std::vector<std::thread> threads;
-        for (int r = 0; r < copies; ++r) {
-          threads.emplace_back([&, r] {
-            try {
-              runs[r] = run(s, steps, P > 1 ? std::make_shared<ThreadWorkShare>(group, r) : nullptr);
-            } catch (const std::exception& e) {
-              errors[r] = e.what();
-            }
-          });
-        }
-        for (std::thread& t : threads) t.join();
+        std::vector<RankRun> runs = ThreadWorkShare::runRanks<RankRun>(
+            P == 1 ? 2 : P, [&](std::shared_ptr<const WorkShare> share) {
+              return run(s, steps, P > 1 ? share : nullptr);
+            });
         if (P == 1) {
           if (maxDifference(runs[1].states, runs[0].states) != 0) {
             throw std::runtime_error("two serial runs ended with different states");
@@ -292,7 +311,6 @@ int main(int argc, char** argv) {
           runs.resize(1);
         }
         for (int r = 0; r < P; ++r) {
-          if (!errors[r].empty()) throw std::runtime_error("rank " + std::to_string(r) + ": " + errors[r]);
           if (maxDifference(runs[r].states, runs[0].states) != 0) {
             throw std::runtime_error("rank " + std::to_string(r) + " of " + std::to_string(P) +
                                      " ended with other states than rank 0");
@@ -322,6 +340,7 @@ int main(int argc, char** argv) {
         std::cout << line << std::flush;
       }
     }
+    std::cout << memory.str();
     if (!out.empty()) {
       std::ofstream f(out);
       f << csv.str();

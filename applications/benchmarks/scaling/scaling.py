@@ -2,12 +2,14 @@
 """The scaling benchmark's tables and cost model (runScaling's runs).
 
     scaling.py table RUNDIR OUTDIR [--skip K]
+    scaling.py memory RUNDIR OUTDIR     (after table: the memory per body, OUTDIR/memory.md)
 
 Reads every run RUNDIR/L<L>-p<P> that finished (log.done): per time step after the first K
 (default 2: the set-up and the first penalty), the master rank's CPU time of the step
 (OpenFOAM's ExecutionTime), the module's (the immersedBodies line: CPU update by part, and the
 penalty terms), the collision sub-steps and distances (summed over the ranks, and the busiest
-rank's), the bodies in the busiest rank's cells, and each rank's peak resident memory
+rank's), the bodies the busiest rank evaluated in the sub-steps, the bodies in the busiest
+rank's cells, and each rank's peak resident memory
 (log.rss). Writes OUTDIR/runs.csv, OUTDIR/table.md (the runs), OUTDIR/costModel.md (the
 per-item costs fitted on the 1-rank runs, their check on the 2-rank runs, and the model's
 prediction for 10^4 bodies on 10^8 cells and 1000 ranks), OUTDIR/metrics.json and
@@ -25,6 +27,7 @@ import numpy as np
 
 PARTS = ("loads", "motion", "substeps", "checks", "cells", "output")
 STEP = re.compile(r"^ExecutionTime = ([0-9.e+-]+) s")
+COLLECTIVES = re.compile(r" \(collectives ([0-9.e+-]+)\)")
 MODULE = re.compile(
     r"^immersedBodies: (\d+) bodies, (\d+) covered cells, \d+ penalty terms, CPU update ([0-9.e+-]+) s "
     r"\(loads ([0-9.e+-]+), motion ([0-9.e+-]+) of which sub-steps ([0-9.e+-]+), checks ([0-9.e+-]+), "
@@ -33,7 +36,8 @@ MODULE = re.compile(
 COLLISIONS = re.compile(
     r"^collisions: (\d+) sub-step\(s\)(?: \(the most of (\d+) island\(s\) of (\d+) bodies\))?, per evaluation "
     r"([0-9.e+-]+) candidate pairs, .* "
-    r"([0-9.e+-]+) distances \([0-9.e+-]+ iterations each(?:; most on one rank ([0-9.e+-]+))?\)")
+    r"([0-9.e+-]+) distances \([0-9.e+-]+ iterations each(?:; most on one rank ([0-9.e+-]+))?\)"
+    r"(?:, bodies evaluated on one rank \(max\) (\d+))?")
 
 
 def parse(case):
@@ -52,9 +56,15 @@ def parse(case):
                 current["candidates"] = float(m.group(4))
                 current["distances"] = float(m.group(5))
                 current["busiestDistances"] = float(m.group(6)) if m.group(6) else float(m.group(5))
+                current["evaluatedBodies"] = int(m.group(7)) if m.group(7) else -1
                 continue
+            c = COLLECTIVES.search(line)
+            if c and line.startswith("immersedBodies:"):
+                current["collectives"] = float(c.group(1))
+                line = COLLECTIVES.sub("", line)
             m = MODULE.match(line)
             if m:
+                current.setdefault("collectives", 0.0)
                 current["bodies"] = int(m.group(1))
                 current["covered"] = int(m.group(2))
                 current["update"] = float(m.group(3))
@@ -87,15 +97,22 @@ def summarise(run, skip):
            "island_bodies": mean("islandBodies"),
            "busiest_distances": mean("busiestDistances"), "busiest_bodies": mean("busiestBodies"),
            "rss_max_MB": max(run["rss"]) / 1024, "rss_sum_MB": sum(run["rss"]) / 1024}
-    for name in PARTS + ("penalty",):
+    for name in PARTS + ("penalty", "collectives"):
         row[name + "_cpu_s"] = mean(name)
     row["module_share_pct"] = 100 * row["module_cpu_s"] / row["step_cpu_s"]
+    # the body and collision work of a rank: the module but its output and the time in the
+    # sub-steps' collectives (the exchange and the wait for the other ranks' earlier work)
+    row["body_work_cpu_s"] = row["module_cpu_s"] - row["output_cpu_s"] - row["collectives_cpu_s"]
+    row["substep_work_cpu_s"] = row["substeps_cpu_s"] - row["collectives_cpu_s"]
     row["distance_share"] = row["busiest_distances"] / max(row["distances"], 1e-30)
     row["body_share"] = row["busiest_bodies"] / row["bodies"]
+    # the bodies whose trial states the busiest rank built in the sub-steps (all on one rank)
+    evaluated = [x["evaluatedBodies"] for x in s]
+    row["evaluated_share"] = 1.0 if min(evaluated) < 0 else float(np.mean(evaluated)) / row["bodies"]
     return row
 
 
-def fit_costs(rows):
+def fit_costs(rows, floor_csv):
     """Per-item costs: what each part of the module costs per item, from the 1- and 2-rank runs
     (the oversubscribed runs' CPU times include waiting for the other ranks: counts only)."""
     one = [r for r in rows if r["P"] == 1]
@@ -106,18 +123,30 @@ def fit_costs(rows):
     # cells, loads and penalty terms: per covered cell of the rank
     c["per_covered_cell"] = np.mean([(r["cells_cpu_s"] + r["loads_cpu_s"] + r["penalty_cpu_s"]) /
                                      r["covered_cells"] for r in one])
-    # the collision sub-steps: a part per body and evaluation that every rank does (the bodies'
-    # updates, the pair search, the collective) and a part per distance divided among the ranks;
-    # least squares over the 1- and 2-rank runs, a negative part set to 0 and the other refitted
-    A = np.array([[2 * r["sub_steps"] * r["bodies"], 2 * r["sub_steps"] * r["distances"] / r["P"]]
-                  for r in timed])
-    b = np.array([r["substeps_cpu_s"] for r in timed])
-    x, *_ = np.linalg.lstsq(A, b, rcond=None)
-    if x[1] < 0:
-        x = np.array([np.linalg.lstsq(A[:, :1], b, rcond=None)[0][0], 0.0])
-    elif x[0] < 0:
-        x = np.array([0.0, np.linalg.lstsq(A[:, 1:], b, rcond=None)[0][0]])
-    c["per_body_evaluation"], c["per_distance"] = float(x[0]), float(x[1])
+    # the collision sub-steps: a part every rank does for every body (the islands and their
+    # check, the damping solve, the states' exchange, the loops over the bodies), below what
+    # these runs resolve: taken from collisionScaling (the sub-steps alone, threads as ranks),
+    # the busiest rank's CPU per body and step on the most ranks it ran (an upper bound: it
+    # includes that rank's own bodies); and a part per body and evaluation for the bodies a
+    # rank evaluates (their trial states, its pairs' distances and laws: the busiest rank's
+    # share e of the bodies, measured), fitted on the runs of the most bodies on every P (the
+    # work without the collectives; on the oversubscribed ranks too, where e is smallest)
+    floor = [row for row in csv.DictReader(open(floor_csv))]
+    most_ranks = max(int(row["ranks"]) for row in floor)
+    c["per_body_step_every_rank"] = max(float(row["cpu_per_step_s"]) / int(row["bodies"])
+                                        for row in floor if int(row["ranks"]) == most_ranks)
+    fitted = [r for r in rows if r["bodies"] == max(x["bodies"] for x in rows)]
+    A = np.array([2 * r["sub_steps"] * r["bodies"] * r["evaluated_share"] for r in fitted])
+    b = np.array([r["substep_work_cpu_s"] - c["per_body_step_every_rank"] * r["bodies"] for r in fitted])
+    c["per_evaluated_body_evaluation"] = max(float(A @ b / (A @ A)), 0.0)
+    # the bodies a rank evaluates: a body is evaluated on a rank if the rank owns it or one of
+    # the bodies linked to it as first bodies; with m such bodies (itself included) owned at
+    # random, e = 1 - (1 - 1/P)^m, m from the run on the most ranks (counts)
+    most = max(rows, key=lambda r: (r["P"], r["bodies"]))
+    if most["P"] > 1 and 0 < most["evaluated_share"] < 1:
+        c["bodies_evaluating_a_body"] = float(np.log(1 - most["evaluated_share"]) / np.log(1 - 1 / most["P"]))
+    else:
+        c["bodies_evaluating_a_body"] = 1.0
     # the checks: a cell search for 7 points a body, each on the rank whose cells hold it
     c["per_body_checks"] = np.mean([r["checks_cpu_s"] / r["bodies"] for r in one])
     c["per_body_output"] = np.mean([r["output_cpu_s"] / r["bodies"] for r in one])
@@ -131,7 +160,6 @@ def fit_costs(rows):
     c["fluid_per_cell"] = per_cell([r for r in timed if r["cells"] == largest])
     c["fluid_per_cell_smallest_mesh"] = per_cell([r for r in timed if r["cells"] == smallest])
     c["covered_per_body"] = np.mean([r["covered_cells"] / r["bodies"] for r in one])
-    c["distances_per_body"] = np.mean([r["distances"] / r["bodies"] for r in one])
     c["sub_steps"] = np.mean([r["sub_steps"] for r in one])
     # memory per rank: a base and a part per cell of the rank (a part per body, every rank
     # holding every body, is below what these runs resolve)
@@ -147,12 +175,17 @@ def model(c, bodies, cells, P, busiest_body_share=None):
     share = busiest_body_share if busiest_body_share is not None else 1.0 / P
     parts = {
         "cells, loads, penalty (the rank's covered cells)": c["per_covered_cell"] * covered * share,
-        "collision sub-steps: per body (every rank)": 2 * c["sub_steps"] * c["per_body_evaluation"] * bodies,
-        "collision sub-steps: distances (shared)": 2 * c["sub_steps"] * c["per_distance"] *
-        c["distances_per_body"] * bodies / P,
+        "collision sub-steps: the rank's evaluated bodies and pairs": 2 * c["sub_steps"] *
+        c["per_evaluated_body_evaluation"] * bodies * (1 - (1 - 1 / P) ** c["bodies_evaluating_a_body"]),
+        "collision sub-steps: every body (every rank)": c["per_body_step_every_rank"] * bodies,
         "checks (shared)": c["per_body_checks"] * bodies / P,
         "body updates (every rank)": c["per_body_motion_rest"] * bodies,
         "output (master)": c["per_body_output"] * bodies,
+        # not measurable on one machine: a stated network (latency 5 us a message, 10 GB/s),
+        # four gathers a sub-step of 14 numbers a body through the master and back (Pstream's
+        # gatherList and scatterList: 2 log2 P messages on the longest path)
+        "collision collectives (assumed network)": 2 * c["sub_steps"] * 2 * (
+            2 * np.log2(max(P, 2)) * 5e-6 + 2 * 14 * 8 * bodies / 10e9),
     }
     module = sum(parts.values())
     fluid = c["fluid_per_cell"] * cells / P
@@ -175,19 +208,21 @@ def table(args):
              "work counts, not times). Means over the steps after the first "
              f"{args.skip}; CPU s per step of the master rank.", "",
              "| L (D) | cells | bodies | P | step CPU s | module CPU s | module % | cells+loads+penalty | "
-             "sub-steps | checks | output | distances/eval | busiest rank's distances | "
-             "busiest rank's bodies | peak memory/rank MB |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "sub-steps (of which collectives) | checks | output | distances/eval | busiest rank's distances | "
+             "busiest rank's bodies | busiest rank's evaluated bodies | peak memory/rank MB |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         lines.append(
             f"| {r['L']:g} | {r['cells']} | {r['bodies']} | {r['P']} | {r['step_cpu_s']:.3g} | "
             f"{r['module_cpu_s']:.3g} | {r['module_share_pct']:.1f} | "
-            f"{r['cells_cpu_s'] + r['loads_cpu_s'] + r['penalty_cpu_s']:.3g} | {r['substeps_cpu_s']:.3g} | "
+            f"{r['cells_cpu_s'] + r['loads_cpu_s'] + r['penalty_cpu_s']:.3g} | {r['substeps_cpu_s']:.3g} "
+            f"({r['collectives_cpu_s']:.3g}) | "
             f"{r['checks_cpu_s']:.3g} | {r['output_cpu_s']:.3g} | {r['distances']:.0f} | "
-            f"{r['distance_share']:.2f} | {r['body_share']:.2f} | {r['rss_max_MB']:.0f} |")
+            f"{r['distance_share']:.2f} | {r['body_share']:.2f} | {r['evaluated_share']:.2f} | "
+            f"{r['rss_max_MB']:.0f} |")
     open(os.path.join(args.outdir, "table.md"), "w").write("\n".join(lines) + "\n")
 
-    c = fit_costs(rows)
+    c = fit_costs(rows, os.path.join(args.outdir, "collisionScaling.csv"))
     out = ["Per-item costs fitted on the 1-rank runs (CPU s on the machine of table.md):", "",
            "| item | cost |", "|---|---|"]
     for k, v in c.items():
@@ -216,11 +251,24 @@ def table(args):
             f"| memory per rank | {mem:.0f} MB |"]
     open(os.path.join(args.outdir, "costModel.md"), "w").write("\n".join(out) + "\n")
 
-    metrics = {"predicted_module_share_pct_1e4_bodies_1e8_cells_1000_ranks": round(100 * mod / (mod + fl), 2),
+    metrics = {"predicted_module_share_pct_1e4_bodies_1000_ranks": round(100 * mod / (mod + fl), 2),
                "predicted_module_cpu_s_1e4_bodies_1e8_cells_1000_ranks": round(mod, 4),
                "predicted_memory_per_rank_MB_1e4_bodies_1e8_cells_1000_ranks": round(mem, 1)}
+    # the issue's keys: the module's share at about 1000 bodies on 2 ranks, and the body and
+    # collision work per rank (the module but its output) on 2 and 8 ranks over 1 rank
+    largest = max(r["bodies"] for r in rows)
+    work = {r["P"]: r["body_work_cpu_s"] for r in rows if r["bodies"] == largest}
+    byP = {r["P"]: r for r in rows if r["bodies"] == largest}
+    if 2 in byP:
+        metrics["module_share_pct_1000_bodies_2_ranks"] = round(byP[2]["module_share_pct"], 2)
+    for P in (2, 8):
+        if 1 in work and P in work:
+            metrics[f"body_work_ratio_{P}_over_1_rank"] = round(work[P] / work[1], 3)
+            metrics[f"substep_work_ratio_{P}_over_1_rank"] = round(
+                byP[P]["substep_work_cpu_s"] / byP[1]["substep_work_cpu_s"], 3)
     for r in rows:
         key = f"N{r['bodies']}_P{r['P']}"
+        metrics[f"busiest_evaluated_share_{key}"] = round(r["evaluated_share"], 3)
         metrics[f"module_share_pct_{key}"] = round(r["module_share_pct"], 2)
         metrics[f"busiest_distance_share_{key}"] = round(r["distance_share"], 3)
         metrics[f"busiest_body_share_{key}"] = round(r["body_share"], 3)
@@ -236,6 +284,8 @@ def table(args):
         rs = [r for r in rows if r["bodies"] == bodies]
         ax.plot([r["P"] for r in rs], [r["distance_share"] for r in rs], "o-", label=f"{bodies} bodies: distances")
         ax.plot([r["P"] for r in rs], [r["body_share"] for r in rs], "s--", label=f"{bodies} bodies: bodies in cells")
+        ax.plot([r["P"] for r in rs], [r["evaluated_share"] for r in rs], "^-.",
+                label=f"{bodies} bodies: bodies evaluated in the sub-steps")
     P = np.array(sorted({r["P"] for r in rows}))
     ax.plot(P, 1 / P, "k:", label="1/P")
     ax.set_xscale("log", base=2)
@@ -250,6 +300,43 @@ def table(args):
     print("\n".join(out))
 
 
+def memory(args):
+    """Bytes per body on a rank: serial runs of one mesh with two or more solid fractions; the
+    peak resident memory against the bodies by least squares (the collision core's share, which
+    every rank holds for every body, from collisionScaling's heap count)."""
+    runs = [parse(os.path.dirname(p))
+            for p in sorted(glob.glob(os.path.join(args.rundir, "**", "L*-p1", "log.done"), recursive=True))]
+    runs = [r for r in runs if r["steps"]]
+    if len({r["cells"] for r in runs}) != 1 or len(runs) < 2:
+        sys.exit(f"scaling.py memory: {args.rundir} needs serial runs of one mesh with two or more fractions")
+    N = np.array([r["steps"][0]["bodies"] for r in runs], dtype=float)
+    rss = np.array([max(r["rss"]) * 1024 for r in runs])
+    path = os.path.join(args.outdir, "metrics.json")
+    metrics = json.load(open(path)) if os.path.exists(path) else {}
+    (base, per_body), *_ = np.linalg.lstsq(np.vstack([np.ones_like(N), N]).T, rss, rcond=None)
+    lines = [f"Serial runs of `runScaling -fraction` on one mesh ({runs[0]['cells']} cells, "
+             f"{runs[0]['date']} UTC): peak resident memory against the bodies.", "",
+             "| bodies | peak memory MB |", "|---|---|"]
+    lines += [f"| {int(n)} | {m / 2**20:.1f} |" for n, m in zip(N, rss)]
+    lines += ["", f"Memory per body (least squares): {per_body / 1024:.1f} kB "
+              f"(the body's cells on the rank that holds them, and what every rank holds of every body)."]
+    # what every rank holds of every body in the collision sub-steps: collisionScaling's heap count
+    core = re.findall(r"^\| (\d+) \| (\d+) \|$", open(os.path.join(args.outdir, "collisionScaling.md")).read(), re.M)
+    if core:
+        n, per = max((int(a), int(b)) for a, b in core)
+        lines += [f"Of it, every rank holds for every body {per} bytes of the collision sub-steps' data "
+                  f"(collisionScaling, {n} bodies): 10^4 bodies add {per * 1e4 / 2**20:.0f} MB to every rank; "
+                  f"the rest follows the body's cells, on the ranks that hold them "
+                  f"(10^4 bodies on 1000 ranks: {per_body * 10 / 2**20:.1f} MB a rank)."]
+        metrics["replicated_bytes_per_body_collision"] = per
+    open(os.path.join(args.outdir, "memory.md"), "w").write("\n".join(lines) + "\n")
+    metrics["memory_per_body_kB_serial"] = round(per_body / 1024, 2)
+    with open(path, "w") as f:
+        json.dump(metrics, f, indent=1, sort_keys=True)
+        f.write("\n")
+    print("\n".join(lines))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     sub = ap.add_subparsers(dest="command", required=True)
@@ -257,8 +344,11 @@ def main():
     t.add_argument("rundir")
     t.add_argument("outdir")
     t.add_argument("--skip", type=int, default=2)
+    m = sub.add_parser("memory")
+    m.add_argument("rundir")
+    m.add_argument("outdir")
     args = ap.parse_args()
-    table(args)
+    table(args) if args.command == "table" else memory(args)
 
 
 if __name__ == "__main__":

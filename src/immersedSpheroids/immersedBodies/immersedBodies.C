@@ -532,6 +532,7 @@ void Foam::immersedBodies::update(const volVectorField& U)
     }
     const double motionCpu = split();
     const double subStepCpu = integrator_->collision().subStepCpu();
+    const double collectiveCpu = integrator_->collision().collectiveCpu();
     const string afterStep("after the step to t = " + time.timeName());
     immersedSpheroids::checkReplicatedState(bodies_, afterStep);
     immersedSpheroids::checkInsideMesh(mesh_, domain_, bodies_, afterStep);
@@ -563,7 +564,13 @@ void Foam::immersedBodies::update(const volVectorField& U)
         << " covered cells, " << returnReduce(forcing_->nTerms(), sumOp<label>())
         << " penalty terms, CPU update " << updateCpu_ << " s (loads "
         << loadsCpu << ", motion " << motionCpu << " of which sub-steps "
-        << subStepCpu << ", checks " << checksCpu << ", cells "
+        << subStepCpu;
+    if (Pstream::parRun())
+    {
+        // (the exchanges of the sub-steps and the wait for the other ranks)
+        Info<< " (collectives " << collectiveCpu << ")";
+    }
+    Info<< ", checks " << checksCpu << ", cells "
         << cellsCpu + setupCpu << ", output " << outputCpu
         << "), penalty (last step) " << lastPenaltyCpu << " s";
     if (Pstream::parRun())

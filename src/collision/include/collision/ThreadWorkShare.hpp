@@ -13,6 +13,8 @@
  *     ThreadWorkShare::Group group(P);
  *     // in thread r:
  *     model.setWorkShare(std::make_shared<ThreadWorkShare>(group, r));
+ * or, threads and group in one call:
+ *     auto results = ThreadWorkShare::runRanks<Result>(P, [](auto share) { ...; return result; });
  *
  * See also: WorkShare, CollisionModel::setWorkShare.
  */
@@ -22,7 +24,11 @@
 #include "collision/WorkShare.hpp"
 
 #include <condition_variable>
+#include <memory>
 #include <mutex>
+#include <stdexcept>
+#include <string>
+#include <thread>
 #include <vector>
 
 namespace collision {
@@ -54,6 +60,38 @@ class ThreadWorkShare : public WorkShare {
 
   /// @throws std::invalid_argument unless 0 <= rank < group.processes()
   ThreadWorkShare(Group& group, int rank);
+
+  /**
+   * body(share) on P threads at once, thread r with the share of rank r of
+   * one group; the results in rank order. A rank that throws while the others
+   * wait in a collective leaves them waiting: body must fail on every rank
+   * alike, as a parallel run must.
+   * @throws std::runtime_error naming the first rank that threw and its message
+   */
+  template <class Result, class Body>
+  static std::vector<Result> runRanks(int processes, const Body& body) {
+    Group group(processes);
+    std::vector<Result> results(processes);
+    std::vector<std::string> errors(processes);
+    std::vector<std::thread> threads;
+    for (int r = 0; r < processes; ++r) {
+      threads.emplace_back([&, r] {
+        try {
+          results[r] = body(std::make_shared<const ThreadWorkShare>(group, r));
+        } catch (const std::exception& e) {
+          errors[r] = e.what();
+        }
+      });
+    }
+    for (std::thread& t : threads) t.join();
+    for (int r = 0; r < processes; ++r) {
+      if (!errors[r].empty()) {
+        throw std::runtime_error("rank " + std::to_string(r) + " of " + std::to_string(processes) +
+                                 ": " + errors[r]);
+      }
+    }
+    return results;
+  }
 
   int rank() const override { return rank_; }
   int size() const override { return group_.processes(); }

@@ -6,9 +6,12 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "collisionModel.H"
+
+#include <algorithm>
 #include "processCpuTime.H"
 #include "HashSet.H"
 #include "coreConversions.H"
+#include "pstreamWorkShare.H"
 #include "collision/SubStepper.hpp"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -29,6 +32,7 @@ Foam::collisionModel::collisionModel(const fvMesh& mesh)
     subStepCpu_(0),
     interactingIslands_(0),
     islandBodies_(0),
+    evaluatedBodies_(0),
     stepper_(new collision::SubStepper())
 {}
 
@@ -82,6 +86,35 @@ void Foam::collisionModel::tooManySubSteps
 }
 
 
+const Foam::pstreamWorkShare* Foam::collisionModel::pstreamShare() const
+{
+    const collision::CollisionModel* core =
+        const_cast<collisionModel&>(*this).coreModel();
+    return
+        core
+      ? dynamic_cast<const pstreamWorkShare*>(core->workShare())
+      : nullptr;
+}
+
+
+Foam::scalar Foam::collisionModel::collectiveCpu() const
+{
+    const pstreamWorkShare* share = pstreamShare();
+    return share ? share->cpu() : 0;
+}
+
+
+void Foam::collisionModel::resetSubStepCpu()
+{
+    subStepCpu_ = 0;
+    const pstreamWorkShare* share = pstreamShare();
+    if (share)
+    {
+        share->resetCpu();
+    }
+}
+
+
 Foam::label Foam::collisionModel::advance
 (
     collision::BodySet& bodies,
@@ -126,6 +159,13 @@ Foam::label Foam::collisionModel::advance
     labelHashSet counts;
     interactingIslands_ = 0;
     islandBodies_ = 0;
+    {
+        const std::vector<char>& evaluated = model->evaluatedBodies();
+        evaluatedBodies_ =
+            evaluated.empty()
+          ? label(states.size())
+          : label(std::count(evaluated.begin(), evaluated.end(), 1));
+    }
     for (const collision::Island& island : stepper_->islands())
     {
         if (island.interacts)

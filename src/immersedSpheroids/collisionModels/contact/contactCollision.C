@@ -457,7 +457,7 @@ void Foam::collisionModels::contact::checkOverlaps
 void Foam::collisionModels::contact::report(const label nSubSteps)
 {
     // each rank's counts are of the pairs it owns (summed here); the
-    // candidate pairs and the damping solve are every rank's alike
+    // damping solve is every rank's alike
     const collision::CollisionStatistics& st = model_->statistics();
     const scalar calls = max(evaluations_, 1);
     const label queries = label(st.distanceQueries);
@@ -468,7 +468,8 @@ void Foam::collisionModels::contact::report(const label nSubSteps)
     Info<< "collisions: " << nSubSteps << " sub-step(s) (the most of "
         << interactingIslands_ << " island(s) of " << islandBodies_
         << " bodies), per evaluation "
-        << st.candidatePairs/calls << " candidate pairs, "
+        << returnReduce(scalar(st.candidatePairs), sumOp<scalar>())/calls
+        << " candidate pairs, "
         << returnReduce(scalar(st.prefilterRejected), sumOp<scalar>())/calls
         << " out of reach by the overlap test, "
         << distances/calls << " distances (" << (distances ? iterations/distances : 0)
@@ -477,7 +478,13 @@ void Foam::collisionModels::contact::report(const label nSubSteps)
     {
         Info<< "; most on one rank " << returnReduce(queries, maxOp<label>())/calls;
     }
-    Info<< "); in contact now "
+    Info<< ")";
+    if (Pstream::parRun())
+    {
+        Info<< ", bodies evaluated on one rank (max) "
+            << returnReduce(evaluatedBodies_, maxOp<label>());
+    }
+    Info<< "; in contact now "
         << returnReduce(label(model_->activeContacts()), sumOp<label>())
         << ", max overlap "
         << returnReduce(st.maxOverlapRatio, maxOp<scalar>()) << " a_min";

@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "pstreamWorkShare.H"
+#include "processCpuTime.H"
 #include "Pstream.H"
 #include "List.H"
 #include "ops.H"
@@ -29,6 +30,7 @@ std::vector<char> Foam::pstreamWorkShare::allGather
     const std::vector<char>& local
 ) const
 {
+    const double cpu0 = immersedSpheroids::processCpuTime();
     List<List<char>> all(Pstream::nProcs());
     all[Pstream::myProcNo()] = List<char>(local.begin(), local.end());
     Pstream::gatherList(all);
@@ -45,6 +47,7 @@ std::vector<char> Foam::pstreamWorkShare::allGather
     {
         out.insert(out.end(), block.begin(), block.end());
     }
+    cpu_ += immersedSpheroids::processCpuTime() - cpu0;
     return out;
 }
 
@@ -55,10 +58,12 @@ void Foam::pstreamWorkShare::minimum
 ) const
 {
     // gathered to the master and its answer sent: the same bits on every rank
+    const double cpu0 = immersedSpheroids::processCpuTime();
     List<scalar> all(values.begin(), values.end());
     Pstream::listCombineGather(all, minEqOp<scalar>());
     Pstream::listCombineScatter(all);
     std::copy(all.begin(), all.end(), values.begin());
+    cpu_ += immersedSpheroids::processCpuTime() - cpu0;
 }
 
 

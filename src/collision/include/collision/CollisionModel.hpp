@@ -21,11 +21,12 @@
  *     if given) recorded as damped pairs, applied implicitly by dampingForces();
  *  5. walls: the wall model (WallModel) against exact spheroid-plane distances.
  * SubStepper takes each body sub-step through forces() and dampingForces().
- * In a parallel run (setWorkShare) each process computes steps 2-5 for the
- * pairs it owns and keeps their histories; one collective per call gives every
- * process the summed forces, the load sums of the next call and the damped
- * pairs (sorted by key), so that the damping solve and the bodies' motion are
- * the same on every process.
+ * In a parallel run (setWorkShare) each process finds the pairs whose first
+ * body it owns (step 1 from those bodies' cells; evaluated bodies only, when
+ * given), computes steps 2-5 for them and keeps their histories; one
+ * collective per call gives every process the summed forces, the load sums
+ * of the next call and the damped pairs (sorted by key), so that the damping
+ * solve and the bodies' motion are the same on every process.
  * The laws and their constants: docs/collisions.md. A distance that does
  * not converge is counted in statistics() (the last iterate is used); a
  * non-finite force throws.

@@ -206,8 +206,27 @@ TEST(SubStepper, BodiesOfDifferentIslandsThatMeetWithinAStepAreAnError) {
     ADD_FAILURE() << "no error";
   } catch (const std::runtime_error& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("bodies 0 and 1"), std::string::npos) << what;
+    EXPECT_NE(what.find("body 0 and body 1"), std::string::npos) << what;
     EXPECT_NE(what.find("different islands"), std::string::npos) << what;
+    EXPECT_NE(what.find("reduce the time step"), std::string::npos) << what;
+  }
+}
+
+TEST(SubStepper, ABodyWithoutCollisionForcesThatReachesAWallWithinAStepIsAnError) {
+  // body 0 at rest, 4 mm from a wall, alone: its island takes no collision
+  // forces; kicked 2 mm a sub-step it reaches the wall in the second step
+  const Scalar a = 1e-3;
+  const std::vector<RigidBody> bodies{sphere(a, Vec3(0, 0, 0), Vec3::Zero())};
+  KickedBodies set(bodies, Vec3::Zero());
+  CollisionModel model = makeModel(ModelSetup(), {PlaneWall{"side", Vec3(5 * a, 0, 0), -Vec3::UnitX()}});
+  std::vector<BodyState> states(bodies.begin(), bodies.end());
+  SubStepper stepper;
+  try {
+    for (int step = 0; step < 3; ++step) stepper.stepIslands(set, states, model, 1e-4, step * 1e-4, 1e-4, 1);
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("body 0 and wall 'side'"), std::string::npos) << what;
     EXPECT_NE(what.find("reduce the time step"), std::string::npos) << what;
   }
 }

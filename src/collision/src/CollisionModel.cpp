@@ -248,18 +248,23 @@ std::vector<Island> CollisionModel::islands(const std::vector<CollisionBody>& bo
   require(std::isfinite(contactTime) && contactTime > 0,
           "contact time " + std::to_string(contactTime) + " must be > 0");
   const int n = static_cast<int>(bodies.size());
-  Scalar speed = 0;
+  Scalar speed = 0, acceleration = 0;
   for (const CollisionBody& b : bodies) {
     if (!b.velocity.allFinite() || !b.angularVelocity.allFinite()) {
       throw std::runtime_error("collision: a body has a non-finite velocity");
     }
     if (b.movable) {
       speed = std::max(speed, b.velocity.norm() + b.angularVelocity.norm() * b.shape.maxSemiAxis());
+      if (std::isfinite(b.mass) && b.mass > 0 && b.externalForce.allFinite()) {
+        acceleration = std::max(acceleration, b.externalForce.norm() / b.mass);
+      }
     }
   }
-  // how far two bodies can close in on each other within the step (each by
-  // twice the largest speed: room for the speed a contact gives)
-  const Scalar margin = 2 * speed * dt;
+  // how far two bodies can close in on each other within the step: each by
+  // twice what the largest speed and the largest acceleration under the
+  // bodies' other forces carry it (room for the speed a contact gives; a
+  // body starting from rest moves too)
+  const Scalar margin = 2 * (speed * dt + 0.5 * acceleration * dt * dt);
   bodyReach(bodies);
   std::vector<Scalar> grownRadii(radii_);
   for (Scalar& r : grownRadii) r += margin;
@@ -287,15 +292,9 @@ std::vector<Island> CollisionModel::islands(const std::vector<CollisionBody>& bo
     // in one island, as without islands
     oneIsland = true;
   }
-  const Lubrication& wallLubrication = wall_->lubrication();
   for (int i = 0; i < n; ++i) {
     if (!bodies[i].movable || (share_ && !own[i])) continue;
-    const Scalar reach =
-        std::max(wallLubrication.acts() ? wallLubrication.activationGap(
-                                              bodies[i].shape.maxOfMaxCurvatureRadius(), kInf,
-                                              bodies[i].cellSize)
-                                        : Scalar(0),
-                 film_ ? bodies[i].filmGap : Scalar(0));
+    const Scalar reach = wallReach(bodies[i]);
     for (const PlaneWall& w : walls_) {
       if (wallDistance(bodies[i].shape, w).distance <= reach + margin) {
         links.emplace_back(i, -1);
@@ -407,16 +406,44 @@ void CollisionModel::checkIslands(const std::vector<CollisionBody>& bodies,
     }
     if (std::make_pair(Scalar(i), Scalar(j)) < std::make_pair(found[0], found[1])) found = {Scalar(i), Scalar(j)};
   }
+  // a body of an island without collision forces (or, with a work share,
+  // one this process did not evaluate) now within reach of a wall
+  std::vector<char> interacting(n, 0);
+  for (std::size_t k = 0; k < islands.size(); ++k) {
+    for (const int b : islands[k].bodies) interacting[b] = islands[k].interacts;
+  }
+  for (int i = 0; i < n && !walls_.empty(); ++i) {
+    if (!bodies[i].movable || (share_ && !own[i])) continue;
+    if (interacting[i] && !(share_ && !evaluated_[i])) continue;
+    const Scalar reach = wallReach(bodies[i]);
+    for (int w = 0; w < static_cast<int>(walls_.size()); ++w) {
+      if (wallDistance(bodies[i].shape, walls_[w]).distance <= reach &&
+          std::make_pair(Scalar(i), Scalar(-1 - w)) < std::make_pair(found[0], found[1])) {
+        found = {Scalar(i), Scalar(-1 - w)};
+      }
+    }
+  }
   // (every process stops alike: the smallest pair of any)
   if (share_) share_->minimum(found);
   if (std::isfinite(found[0])) {
+    const int i = int(found[0]), j = int(found[1]);
     throw std::runtime_error(
-        "collision: bodies " + std::to_string(int(found[0])) + " and " + std::to_string(int(found[1])) +
+        "collision: body " + std::to_string(i) +
+        (j >= 0 ? " and body " + std::to_string(j) : " and wall '" + walls_[-1 - j].name + "'") +
         " came within reach of each other within a step from different islands, or (with a work share)"
         " without being linked at its start (bodies"
         " that can meet within a step are sub-stepped together; their speeds grew beyond the"
-        " islands' margin of twice the largest speed): reduce the time step");
+        " islands' margin of twice the distance the largest speed and acceleration carry a body):"
+        " reduce the time step");
   }
+}
+
+Scalar CollisionModel::wallReach(const CollisionBody& b) const {
+  const Lubrication& wallLubrication = wall_->lubrication();
+  return std::max(wallLubrication.acts() ? wallLubrication.activationGap(
+                                               b.shape.maxOfMaxCurvatureRadius(), kInf, b.cellSize)
+                                         : Scalar(0),
+                  film_ ? b.filmGap : Scalar(0));
 }
 
 void CollisionModel::bodyReach(const std::vector<CollisionBody>& bodies,

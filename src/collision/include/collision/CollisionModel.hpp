@@ -240,8 +240,9 @@ class CollisionModel {
   /**
    * The islands of a fluid step dt: bodies linked, directly or through others,
    * by pairs whose bounding spheres, grown by their reach (lubrication, film)
-   * and by twice the largest distance a body covers in dt (2 v_max dt, v_max
-   * the largest speed plus rotation at the largest semi-axis), overlap; a
+   * and by twice the largest distance a body covers in dt (2 (v_max dt +
+   * a_max dt^2/2), v_max the largest speed plus rotation at the largest
+   * semi-axis, a_max the largest external force over mass), overlap; a
    * body within that distance of a wall's reach interacts with it. Each
    * island's sub-steps are subSteps() of its bodies and contacts alone. In
    * the order of their first bodies; with a work share, the same on every
@@ -259,9 +260,10 @@ class CollisionModel {
   /**
    * After the islands of a step were advanced apart: throws std::runtime_error
    * naming two bodies of different islands whose grown bodies (their reach)
-   * now meet, which the islands' margin should have ruled out (with a work
-   * share also two bodies that were not linked at the start of the step; on
-   * every process alike: one collective).
+   * now meet, or a body of an island without collision forces now within
+   * reach of a wall, which the islands' margin should have ruled out (with a
+   * work share also bodies, or a body and a wall, that were not linked at the
+   * start of the step; on every process alike: one collective).
    */
   void checkIslands(const std::vector<CollisionBody>& bodies, const std::vector<Island>& islands);
 
@@ -384,6 +386,9 @@ class CollisionModel {
   /// contact, or their fastest possible impact, lasts subStepsPerContact of them
   /// @throws TooManySubSteps beyond maxSubSteps
   int subStepsFor(Scalar dt, Scalar tc, Scalar speed, Scalar aMin) const;
+  /// how close to a wall the body interacts with it: the wall lubrication's
+  /// activation gap and the film gap, the larger
+  Scalar wallReach(const CollisionBody& b) const;
   /// does this process compute the pair (always without a work share)?
   bool owns(std::uint64_t k) const { return !share_ || share_->owns(k); }
   /// each body's contact force of this process's pairs in contact_ (the

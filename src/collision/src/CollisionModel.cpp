@@ -313,13 +313,16 @@ std::vector<Island> CollisionModel::islands(const std::vector<CollisionBody>& bo
     std::vector<int> flat;
     flat.reserve(2 * links.size());
     for (const auto& [i, j] : links) flat.insert(flat.end(), {i, j});
-    std::vector<char> bytes(flat.size() * sizeof(int));
-    if (!flat.empty()) std::memcpy(bytes.data(), flat.data(), bytes.size());
-    const std::vector<char> all = share_->allGather(bytes);
-    flat.resize(all.size() / sizeof(int));
-    if (!flat.empty()) std::memcpy(flat.data(), all.data(), all.size());
+    flat = share_->allGatherValues(flat);
+    if (flat.size() % 2 != 0) throw std::runtime_error("collision: a process sent half a link");
     links.clear();
-    for (std::size_t k = 0; k + 1 < flat.size(); k += 2) links.emplace_back(flat[k], flat[k + 1]);
+    for (std::size_t k = 0; k < flat.size(); k += 2) {
+      if (flat[k] < 0 || flat[k] >= n || flat[k + 1] < -1 || flat[k + 1] >= n) {
+        throw std::runtime_error("collision: a process sent a link of bodies " +
+                                 std::to_string(flat[k]) + " and " + std::to_string(flat[k + 1]));
+      }
+      links.emplace_back(flat[k], flat[k + 1]);
+    }
   }
   for (const auto& [i, j] : links) {
     interacts[i] = 1;

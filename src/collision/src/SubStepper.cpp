@@ -2,12 +2,28 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <cstring>
 #include <functional>
 #include <stdexcept>
 #include <string>
 
 namespace collision {
+
+namespace {
+
+/// the body index that starts the record at k of a gather (records of `size`
+/// numbers, the index first), checked
+/// @throws std::runtime_error on a short record or an index not below n
+std::size_t receivedBody(const std::vector<Scalar>& received, std::size_t k, std::size_t size,
+                         std::size_t n) {
+  const Scalar i = k + size <= received.size() ? received[k] : Scalar(-1);
+  if (!(i >= 0 && i < Scalar(n))) {
+    throw std::runtime_error("collision: a process sent a short record or body " + std::to_string(i) +
+                             " of " + std::to_string(n));
+  }
+  return static_cast<std::size_t>(i);
+}
+
+}  // namespace
 
 void SubStepper::step(BodySet& bodies, std::vector<BodyState>& states, CollisionModel* model,
                       Scalar contactTime, Scalar t, Scalar dt,
@@ -156,6 +172,7 @@ void SubStepper::stepIslands(BodySet& bodies, std::vector<BodyState>& states, Co
       }
     }
   }
+  // (predicted_ holds the bodies at the end of the step for the check)
   for (std::size_t i = 0; i < n; ++i) predicted_[i] = bodies.collisionBody(i, states[i]);
   model.checkIslands(predicted_, islands_);
 }
@@ -176,14 +193,10 @@ void SubStepper::gatherDampedBodies(const WorkShare& share, const std::vector<ch
                  b.mass, J(0, 0), J(0, 1), J(0, 2), J(1, 0), J(1, 1), J(1, 2), J(2, 0), J(2, 1),
                  J(2, 2), Scalar(b.movable), Scalar(b.stationary)});
   }
-  std::vector<char> bytes(mine.size() * sizeof(Scalar));
-  if (!mine.empty()) std::memcpy(bytes.data(), mine.data(), bytes.size());
-  const std::vector<char> all = share.allGather(bytes);
-  std::vector<Scalar> numbers(all.size() / sizeof(Scalar));
-  if (!numbers.empty()) std::memcpy(numbers.data(), all.data(), all.size());
-  for (std::size_t k = 0; k + kNumbers <= numbers.size(); k += kNumbers) {
+  const std::vector<Scalar> numbers = share.allGatherValues(mine);
+  for (std::size_t k = 0; k < numbers.size(); k += kNumbers) {
     const Scalar* x = &numbers[k];
-    const std::size_t i = static_cast<std::size_t>(x[0]);
+    const std::size_t i = receivedBody(numbers, k, kNumbers, damped_.size());
     if (advanced[i]) continue;  // (this process's own)
     endVelocity_[i] = Vec3(x[1], x[2], x[3]);
     endAngularVelocity_[i] = Vec3(x[4], x[5], x[6]);
@@ -207,14 +220,10 @@ void SubStepper::gatherStates(const WorkShare& share, std::vector<BodyState>& st
                              b.orientation.z(), b.velocity.x(), b.velocity.y(), b.velocity.z(),
                              b.angularVelocity.x(), b.angularVelocity.y(), b.angularVelocity.z()});
   }
-  std::vector<char> bytes(mine.size() * sizeof(Scalar));
-  if (!mine.empty()) std::memcpy(bytes.data(), mine.data(), bytes.size());
-  const std::vector<char> all = share.allGather(bytes);
-  std::vector<Scalar> numbers(all.size() / sizeof(Scalar));
-  if (!numbers.empty()) std::memcpy(numbers.data(), all.data(), all.size());
-  for (std::size_t k = 0; k + kNumbers + 1 <= numbers.size(); k += kNumbers + 1) {
+  const std::vector<Scalar> numbers = share.allGatherValues(mine);
+  for (std::size_t k = 0; k < numbers.size(); k += kNumbers + 1) {
     const Scalar* x = &numbers[k];
-    BodyState& b = states[static_cast<std::size_t>(x[0])];
+    BodyState& b = states[receivedBody(numbers, k, kNumbers + 1, states.size())];
     b.centre = Vec3(x[1], x[2], x[3]);
     b.orientation = Quat(x[4], x[5], x[6], x[7]);
     b.velocity = Vec3(x[8], x[9], x[10]);

@@ -24,6 +24,10 @@
 #include "collision/Types.hpp"
 
 #include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
 #include <vector>
 
 namespace collision {
@@ -40,6 +44,24 @@ class WorkShare {
   virtual std::vector<char> allGather(const std::vector<char>& local) const = 0;
   /// each entry the smallest of the processes' values of it, on every process (collective)
   virtual void minimum(std::vector<Scalar>& values) const = 0;
+
+  /// every process's values concatenated in process order, on every process
+  /// (allGather of their bytes; values of a trivially copyable type)
+  /// @throws std::runtime_error if the bytes received are not whole values
+  template <class T>
+  std::vector<T> allGatherValues(const std::vector<T>& local) const {
+    static_assert(std::is_trivially_copyable<T>::value, "allGatherValues: values copied as bytes");
+    std::vector<char> bytes(local.size() * sizeof(T));
+    if (!local.empty()) std::memcpy(bytes.data(), local.data(), bytes.size());
+    const std::vector<char> all = allGather(bytes);
+    if (all.size() % sizeof(T) != 0) {
+      throw std::runtime_error("collision: the processes sent " + std::to_string(all.size()) +
+                               " bytes, not whole values of " + std::to_string(sizeof(T)));
+    }
+    std::vector<T> values(all.size() / sizeof(T));
+    if (!values.empty()) std::memcpy(values.data(), all.data(), all.size());
+    return values;
+  }
 
   /// the process that owns body i (>= 0)
   int bodyOwner(int i) const;

@@ -28,11 +28,11 @@ namespace Foam
 Foam::collisionModel::collisionModel(const fvMesh& mesh)
 :
     mesh_(mesh),
-    evaluations_(0),
-    subStepCpu_(0),
     interactingIslands_(0),
     islandBodies_(0),
     evaluatedBodies_(0),
+    evaluations_(0),
+    subStepCpu_(0),
     stepper_(new collision::SubStepper())
 {}
 

@@ -98,8 +98,17 @@ void Foam::hydrodynamicLoads::update
         }
         if (debug)
         {
+            // the links' part, summed over the ranks (diagnostic only)
+            vector links(Zero);
+            label nLinks = 0;
+            forcing.linkForce(bodyi, body, u, links, nLinks);
+            reduce(links, sumOp<vector>());
+            reduce(nLinks, sumOp<label>());
             Info<< "immersedBodies: " << body.name() << ": penalty force "
-                << fluidDensity*s.penaltyForce << ", internal-fluid momentum "
+                << fluidDensity*s.penaltyForce << " (links " << fluidDensity*links
+                << " from " << nLinks << " terms of "
+                << returnReduce(forcing.bodyTerms(bodyi).size(), sumOp<label>())
+                << "), internal-fluid momentum "
                 << fluidDensity*s.momentum << ", hydrodynamic force " << force
                 << endl;
         }

@@ -568,6 +568,31 @@ void Foam::penaltyForcing::bodyForce
 }
 
 
+void Foam::penaltyForcing::linkForce
+(
+    const label bodyi,
+    const immersedBody& body,
+    const vectorField& U,
+    vector& force,
+    label& nLinks
+) const
+{
+    force = Zero;
+    nLinks = 0;
+    const scalarField& V = mesh_.V();
+    const vectorField& C = mesh_.C().primitiveField();
+    const symmTensor A = body.quadraticForm();
+    for (const penaltyTerm& term : bodyTerms(bodyi))
+    {
+        if (immersedBody::levelSet(C[term.cell], body.state().centre + term.shift, A) > 0)
+        {
+            force += V[term.cell]*(term.coeff*U[term.cell] - term.source);
+            ++nLinks;
+        }
+    }
+}
+
+
 void Foam::penaltyForcing::addTo(fvVectorMatrix& source) const
 {
     const double cpu0 = immersedSpheroids::processCpuTime();

@@ -3,6 +3,8 @@
 (validation/forceRipple, see README.md).
 
     forceRipple.py run [--force] [--only NAME ...]
+    forceRipple.py runRe [--force] [--only NAME ...]
+    forceRipple.py split
     forceRipple.py plot
 
 A sphere (D = 1, nu = 1, rho_f = 1) in a triply periodic box L = 4 D moves
@@ -17,9 +19,28 @@ deviation of the drag F_x over those two cells, divided by its mean.
 run: the cases of the campaign (forcing surfaceCorrected and cutCellFraction,
      8 and 16 cells/D, lambda = nu dt/h^2 = 1) in run/<name>/ (git-ignored),
      each appended to results/runs.csv and skipped next time unless --force.
+runRe: the same sphere at Re 10 relative to the mean flow (nu = 0.1, U_b =
+     (1.5, 0, 0), the mean velocity held at (0.5, 0, 0)), in a box of uniform
+     cells (the body crosses the periodic faces), paired with its fixed twin:
+     the same sphere held still in the mean flow (-1, 0, 0), the same flow in
+     the body's frame. Both run to t = 10 (2.5 box viscous times) from the same
+     start with the same steps, so their drags share the start-up transient;
+     the difference of their means over the last 4 time units is the forcing's
+     departure from Galilean invariance (a moving body's drag against a fixed
+     one's), the moving drag's standard deviation over its last 4 cells (linear
+     trend removed) its ripple. Pairs for the time schemes Euler and backward,
+     Courant number U_b dt/h 0.25 and 0.125, 8, 12 and 16 cells/D; rows in
+     results/runsRe.csv.
+split: the moving sphere of runRe at 8 cells/D (Euler, co 0.25) for 3 time units
+     with the module's debug output, which splits the penalty force into the
+     penalised cells and the surface correction's links: the ripple of each
+     part, of the internal-fluid term and of their sum over the last 4 cells,
+     and the numbers of terms; results/split.md.
 plot: results/table.md, results/metrics.json (ripple_pct_8, ripple_pct_16:
-     the default forcing's; ripple_pct_8_cutCell, ripple_pct_16_cutCell) and
-     results/forceRipple.png.
+     the default forcing's; ripple_pct_8_cutCell, ripple_pct_16_cutCell; from
+     runRe: ripple_pct_<cpd>_Re10_<ddt>, galilean_difference_pct_<cpd>_Re10_<ddt>,
+     with _co0.125 for the halved step), results/forceRipple.png and
+     results/forceRippleRe10.png.
 """
 import argparse
 import math
@@ -36,7 +57,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "stokesDrag"))
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
 import caseWriter  # noqa: E402
 from runner import read_force  # noqa: E402
-from validationTools import mesh_cells, provenance, read_csv, run_logged, write_csv, cpu_seconds  # noqa: E402
+from validationTools import (mesh_cells, provenance, read_csv, refined_box_mesh,  # noqa: E402
+                             run_logged, write_csv, cpu_seconds)
 
 RESULTS = os.path.join(HERE, "results")
 RUNS_CSV = os.path.join(RESULTS, "runs.csv")
@@ -46,6 +68,16 @@ U_MEAN = 0.02
 LAMBDA = 1.0
 CELLS_CROSSED = 2
 FORCINGS = ("surfaceCorrected", "cutCellFraction")
+# the finite-Re campaign (runRe)
+RE_NU = 0.1
+RE_U_BODY = 1.5
+RE_U_MEAN = 0.5
+RE_T_END = 10.0
+RE_WINDOW = 4.0
+RE_RIPPLE_CELLS = 4
+RUNS_RE_CSV = os.path.join(RESULTS, "runsRe.csv")
+RE_FIELDS = ["name", "cpd", "motion", "ddt", "co", "dt", "cells", "steps", "mean_Fx",
+             "ripple_pct", "cpu_s", "host", "date", "commit"]
 FIELDS = ["name", "forcing", "cpd", "lambda", "dt", "cells", "steps", "t_start", "t_end",
           "mean_Fx", "std_Fx", "ripple_pct", "max_minus_min_pct", "cpu_s", "host", "date",
           "commit"]
@@ -96,6 +128,145 @@ def run_one(name, cpd, forcing):
                 cpu_s=f"{cpu_seconds(case):.0f}", **provenance())
 
 
+def campaign_re():
+    """(name, settings) of the Re 10 pairs: each (cpd, ddt, co) moving and fixed."""
+    sets = [(8, "Euler", 0.25), (8, "Euler", 0.125), (8, "backward", 0.25),
+            (8, "backward", 0.125), (12, "Euler", 0.25), (12, "backward", 0.25),
+            (16, "backward", 0.25)]
+    return [(re_name(cpd, motion, ddt, co), dict(cpd=cpd, motion=motion, ddt=ddt, co=co))
+            for cpd, ddt, co in sets for motion in ("moving", "fixed")]
+
+
+def re_name(cpd, motion, ddt, co):
+    return f"re10-c{cpd}-{motion}-{ddt}" + ("" if co == 0.25 else f"-co{co:g}")
+
+
+def run_one_re(name, cpd, motion, ddt, co):
+    """One run of the Re 10 campaign; the drag history goes to results/<name>.dat."""
+    case = os.path.join(HERE, "run", name)
+    if os.path.exists(case):
+        subprocess.run(["rm", "-rf", case], check=True)
+    h = 1.0 / cpd
+    dt = co * h / RE_U_BODY
+    steps = int(round(RE_T_END / dt))
+    # the body starts off the mesh lines; the fixed twin sits at the same point
+    centre = (0.0, 0.31 * h, 0.17 * h)
+    if motion == "moving":
+        flow = dict(ubar=(RE_U_MEAN, 0.0, 0.0), body_velocity=(RE_U_BODY, 0.0, 0.0))
+    else:
+        flow = dict(ubar=(RE_U_MEAN - RE_U_BODY, 0.0, 0.0))
+    caseWriter.write_case(case, 1.0, "x", BOX, cpd, dt, steps * dt, nu=RE_NU, ddt=ddt,
+                          write_interval=steps, centre=centre, **flow)
+    # uniform cells over the whole box: the moving body crosses the periodic faces
+    half = 0.5 * BOX
+    refined_box_mesh(case, ["--box", *map(str, (-half, half) * 3),
+                            "--fine", *map(str, (-half, half) * 3), "--h", f"{h:.12g}",
+                            "--periodic", "x", "--periodic", "y", "--periodic", "z"])
+    with open(os.path.join(case, "log.blockMesh"), "w") as out:
+        subprocess.run(["blockMesh"], cwd=case, stdout=out, stderr=subprocess.STDOUT, check=True)
+    print(f"{name}: {mesh_cells(case)} cells, dt {dt:.4g}, {steps} steps", flush=True)
+    rc = run_logged(["nice", "-n", "10", "pimpleFoam"], case, "log.solver")
+    if rc != 0:
+        raise RuntimeError(f"pimpleFoam failed in {case} (see log.solver)")
+    times, F = read_force(case)
+    if len(times) < steps:
+        raise RuntimeError(f"{case}: {len(times)} force samples, {steps} steps expected")
+    np.savetxt(os.path.join(RESULTS, f"{name}.dat"), np.column_stack([times, F[:, 0]]),
+               header="t, F_x", fmt="%.10g")
+    window = times > RE_T_END - RE_WINDOW
+    return dict(name=name, cpd=cpd, motion=motion, ddt=ddt, co=f"{co:g}", dt=f"{dt:.6g}",
+                cells=mesh_cells(case), steps=steps,
+                mean_Fx=f"{float(np.mean(F[window, 0])):.8g}",
+                ripple_pct=f"{re_ripple_pct(times, F[:, 0], cpd):.5f}",
+                cpu_s=f"{cpu_seconds(case):.0f}", **provenance())
+
+
+def re_ripple_pct(times, fx, cpd):
+    """Standard deviation of the drag over the last RE_RIPPLE_CELLS cells the
+    body crossed, its linear trend (the start-up's end) removed, over its mean."""
+    span = RE_RIPPLE_CELLS / cpd / RE_U_BODY
+    w = times > times[-1] - span + 1e-9
+    t, f = times[w], fx[w]
+    fit = np.polyval(np.polyfit(t - t.mean(), f, 1), t - t.mean())
+    return 100 * float(np.std(f - fit)) / abs(float(np.mean(f)))
+
+
+def do_run_re(args):
+    os.makedirs(RESULTS, exist_ok=True)
+    done = {r["name"] for r in read_csv(RUNS_RE_CSV)} if not args.force else set()
+    for name, kw in campaign_re():
+        if (args.only and name not in args.only) or name in done:
+            continue
+        row = run_one_re(name, **kw)
+        print(f"  -> mean F_x {row['mean_Fx']}, ripple {row['ripple_pct']} %", flush=True)
+        write_csv(RUNS_RE_CSV,
+                  [r for r in read_csv(RUNS_RE_CSV) if r["name"] != name] + [row], RE_FIELDS)
+
+
+def do_split():
+    """The parts of the moving sphere's drag (see the module docstring)."""
+    import re
+    cpd, co, t_end = 8, 0.25, 3.0
+    case = os.path.join(HERE, "run", "re10-split")
+    subprocess.run(["rm", "-rf", case], check=True)
+    h = 1.0 / cpd
+    dt = co * h / RE_U_BODY
+    steps = int(round(t_end / dt))
+    caseWriter.write_case(case, 1.0, "x", BOX, cpd, dt, steps * dt, nu=RE_NU, ddt="Euler",
+                          write_interval=steps, centre=(0.0, 0.31 * h, 0.17 * h),
+                          ubar=(RE_U_MEAN, 0.0, 0.0), body_velocity=(RE_U_BODY, 0.0, 0.0))
+    half = 0.5 * BOX
+    refined_box_mesh(case, ["--box", *map(str, (-half, half) * 3),
+                            "--fine", *map(str, (-half, half) * 3), "--h", f"{h:.12g}",
+                            "--periodic", "x", "--periodic", "y", "--periodic", "z"])
+    with open(os.path.join(case, "system", "controlDict"), "a") as f:
+        f.write("\nDebugSwitches\n{\n    immersedBodies  1;\n}\n")
+    with open(os.path.join(case, "log.blockMesh"), "w") as out:
+        subprocess.run(["blockMesh"], cwd=case, stdout=out, stderr=subprocess.STDOUT, check=True)
+    if run_logged(["pimpleFoam"], case, "log.solver") != 0:
+        raise RuntimeError(f"pimpleFoam failed in {case} (see log.solver)")
+    vec = r"\(([^)]*)\)"
+    pat = re.compile(r"penalty force " + vec + r" \(links " + vec + r" from (\d+) terms of "
+                     r"(\d+)\), internal-fluid momentum " + vec + r", hydrodynamic force " + vec)
+    rows = []
+    with open(os.path.join(case, "log.solver")) as f:
+        for line in f:
+            m = pat.search(line)
+            if m:
+                rows.append([float(m.group(1).split()[0]), float(m.group(2).split()[0]),
+                             int(m.group(3)), int(m.group(4)), float(m.group(5).split()[0]),
+                             float(m.group(6).split()[0])])
+    d = np.array(rows)
+    if len(d) < steps:
+        raise RuntimeError(f"{case}: {len(d)} debug lines, {steps} steps expected")
+    n = int(round(RE_RIPPLE_CELLS * h / (RE_U_BODY * dt)))
+    last = d[-n:]
+    drag = abs(float(np.mean(last[:, 5])))
+
+    def ripple(x):
+        k = np.arange(len(x))
+        return 100 * float(np.std(x - np.polyval(np.polyfit(k, x, 1), k))) / drag
+
+    internal = np.diff(d[-n - 1:, 4]) / dt
+    parts = [("penalised cells", last[:, 0] - last[:, 1]), ("links", last[:, 1]),
+             ("penalty force (both)", last[:, 0]), ("internal-fluid term", internal),
+             ("hydrodynamic force", last[:, 5])]
+    md = ["# The parts of a moving sphere's drag", "",
+          "Produced by `/usr/bin/python3 validation/forceRipple/forceRipple.py split`: the moving "
+          f"sphere of the Re 10 campaign, {cpd} cells/D, Euler, co {co:g}, to t = {t_end:g} with "
+          "`DebugSwitches { immersedBodies 1; }`; the last "
+          f"{RE_RIPPLE_CELLS} cells ({n} steps), linear trend removed, in % of the mean drag "
+          f"{drag:.4f}.", "", "| part | mean F_x | ripple [%] |", "|---|---|---|"]
+    for name, x in parts:
+        md.append(f"| {name} | {np.mean(x):.4f} | {ripple(x):.3f} |")
+    md += ["", f"Terms per step: {int(last[:, 3].min())}-{int(last[:, 3].max())}, of which links "
+           f"{int(last[:, 2].min())}-{int(last[:, 2].max())} and penalised cells "
+           f"{int((last[:, 3] - last[:, 2]).min())}-{int((last[:, 3] - last[:, 2]).max())}."]
+    with open(os.path.join(RESULTS, "split.md"), "w") as f:
+        f.write("\n".join(md) + "\n")
+    print("\n".join(md))
+
+
 def do_run(args):
     os.makedirs(RESULTS, exist_ok=True)
     done = {r["name"] for r in read_csv(RUNS_CSV)} if not args.force else set()
@@ -133,6 +304,7 @@ def do_plot():
                   f"{float(r['ripple_pct']):.3f} | {r['cpu_s']} |")
         suffix = "" if r["forcing"] == "surfaceCorrected" else "_cutCell"
         metrics[f"ripple_pct_{r['cpd']}{suffix}"] = round(float(ripple), 5)
+    md += plot_re(plt, metrics)
     with open(os.path.join(RESULTS, "table.md"), "w") as f:
         f.write("\n".join(md) + "\n")
     with open(os.path.join(RESULTS, "metrics.json"), "w") as f:
@@ -158,16 +330,69 @@ def do_plot():
     fig.savefig(os.path.join(RESULTS, "forceRipple.png"), dpi=120)
 
 
+def plot_re(plt, metrics):
+    """The Re 10 campaign: its table (markdown lines), metrics and figure."""
+    rows = {r["name"]: r for r in read_csv(RUNS_RE_CSV)}
+    if not rows:
+        return []
+    md = ["", "## Re 10: a moving sphere against its fixed twin", "",
+          "Produced by `validation/forceRipple/Allrun -plot` from results/runsRe.csv "
+          f"(`forceRipple.py runRe`). Sphere, L/D = {BOX:g}, uniform cells, nu = {RE_NU:g}, "
+          f"body velocity {RE_U_BODY:g} through the mean flow {RE_U_MEAN:g} (Re "
+          f"{(RE_U_BODY - RE_U_MEAN) / RE_NU:g}), its fixed twin in the mean flow "
+          f"{RE_U_MEAN - RE_U_BODY:g}; Courant number co = U_b dt/h. Mean drags over t = "
+          f"{RE_T_END - RE_WINDOW:g}-{RE_T_END:g}; difference = moving/fixed - 1; ripple = "
+          f"std/mean of the moving drag over its last {RE_RIPPLE_CELLS} cells (trend removed).",
+          "", "| cells/D | time scheme | co | cells | steps | F_x fixed | F_x moving | "
+          "difference [%] | ripple [%] | CPU moving + fixed [s] |",
+          "|---|---|---|---|---|---|---|---|---|---|"]
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    for name, kw in campaign_re():
+        if kw["motion"] != "moving":
+            continue
+        fixed = rows.get(re_name(kw["cpd"], "fixed", kw["ddt"], kw["co"]))
+        moving = rows.get(name)
+        if fixed is None or moving is None:
+            continue
+        diff = 100 * (float(moving["mean_Fx"]) / float(fixed["mean_Fx"]) - 1)
+        ripple = float(moving["ripple_pct"])
+        md.append(f"| {kw['cpd']} | {kw['ddt']} | {kw['co']:g} | {moving['cells']} | "
+                  f"{moving['steps']} | {float(fixed['mean_Fx']):.5f} | "
+                  f"{float(moving['mean_Fx']):.5f} | {diff:+.3f} | {ripple:.3f} | "
+                  f"{moving['cpu_s']} + {fixed['cpu_s']} |")
+        suffix = f"{kw['cpd']}_Re10_{kw['ddt']}" + ("" if kw["co"] == 0.25 else f"_co{kw['co']:g}")
+        metrics[f"galilean_difference_pct_{suffix}"] = round(diff, 4)
+        metrics[f"ripple_pct_{suffix}"] = round(ripple, 4)
+        d = np.loadtxt(os.path.join(RESULTS, f"{name}.dat"))
+        h = 1.0 / kw["cpd"]
+        last = d[:, 0] > d[-1, 0] - 2 * h / RE_U_BODY + 1e-9
+        t = d[last, 0]
+        ax.plot((t - t[0]) * RE_U_BODY / h, (d[last, 1] / np.mean(d[last, 1]) - 1) * 100,
+                ".-" if kw["ddt"] == "backward" else ".--",
+                label=f"{kw['cpd']} cells/D, {kw['ddt']}, co {kw['co']:g}")
+    ax.set_xlabel("distance travelled [cells] (the last two)")
+    ax.set_ylabel("F_x / mean - 1  [%]")
+    ax.set_title("Drag of a sphere moving through the cells at Re 10")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(RESULTS, "forceRippleRe10.png"), dpi=120)
+    return md
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = ap.add_subparsers(dest="cmd", required=True)
-    r = sub.add_parser("run")
-    r.add_argument("--force", action="store_true")
-    r.add_argument("--only", action="append", default=[])
+    for cmd in ("run", "runRe"):
+        r = sub.add_parser(cmd)
+        r.add_argument("--force", action="store_true")
+        r.add_argument("--only", action="append", default=[])
+    sub.add_parser("split")
     sub.add_parser("plot")
     args = ap.parse_args()
-    do_run(args) if args.cmd == "run" else do_plot()
+    {"run": do_run, "runRe": do_run_re, "split": lambda _: do_split(),
+     "plot": lambda _: do_plot()}[args.cmd](args)
 
 
 if __name__ == "__main__":

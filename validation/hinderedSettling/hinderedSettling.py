@@ -8,7 +8,8 @@
     hinderedSettling.py held [--out DIR]
     hinderedSettling.py plot [--out DIR]
     hinderedSettling.py quick [--out DIR]
-    (every command also takes --ga GA: the Galileo number of a new DIR, default 20)
+    (every command also takes --ga GA: the Galileo number of a new DIR, default 20, and
+    --ddt Euler|backward: the time scheme of a new DIR, default the tutorial's)
 
 reference: the single sphere's terminal velocity on the mesh of the suspensions (cpd
      cells per D): the sphere held fixed in a uniform stream (validation/finiteReynoldsDrag's
@@ -36,8 +37,9 @@ quick: the smoke version (12 spheres in a 4 D box at 4 cells per D, 4 D/V_g, abo
 
 Units: D = 1, rho_f = 1, |g| = 1, rho_p/rho_f = RATIO, nu = sqrt((RATIO - 1) g D^3)/GA, so the
 gravitational velocity V_g = sqrt((RATIO - 1) g D) = 1 and times are in D/V_g. DIR/results/
-parameters.json records the Galileo number of DIR (its other values are fixed here); at a
-Galileo number other than 20 the campaign is the three core runs.
+parameters.json records the Galileo number of DIR and its time scheme if not the tutorial's
+(its other values are fixed here); at a Galileo number other than 20 the campaign is the three
+core runs.
 """
 import argparse
 import fcntl
@@ -69,6 +71,8 @@ DEFAULT_GA = 20.0         # Galileo number sqrt((rho_p/rho_f - 1) g D^3)/nu
 RATIO = 2.0               # rho_p/rho_f
 GA = DEFAULT_GA           # of the results folder in use (set_galileo)
 NU = math.sqrt(RATIO - 1.0) / GA
+DDT = None                # time scheme of the results folder in use (None: the tutorial's)
+DDT_SCHEMES = ("Euler", "backward")
 PARAMETERS = "parameters.json"   # the Galileo number of a results folder
 END_TIME = 100.0          # D/V_g, of the side runs
 CORE_END_TIME = 200.0     # D/V_g, of the core runs and the second packing
@@ -137,6 +141,29 @@ def set_galileo(results, ga):
         os.makedirs(results, exist_ok=True)
         with open(path, "w") as f:
             json.dump({"Ga": GA, "density_ratio": RATIO}, f)
+            f.write("\n")
+
+
+def set_time_scheme(results, ddt):
+    """The time scheme of the results folder: ddt (None: the folder's own, else the
+    tutorial's), recorded in results/parameters.json; a folder keeps the one it was made
+    with."""
+    global DDT
+    import json
+    path = os.path.join(results, PARAMETERS)
+    params = json.load(open(path)) if os.path.exists(path) else {}
+    recorded = params.get("ddt")
+    if ddt is not None and recorded is not None and ddt != recorded:
+        sys.exit(f"hinderedSettling: {path} holds ddt {recorded}, not --ddt {ddt}; use another "
+                 f"--out for another time scheme")
+    if ddt is not None and recorded is None and os.path.exists(os.path.join(results, "runs.csv")):
+        sys.exit(f"hinderedSettling: {results} has runs made with the tutorial's time scheme; "
+                 f"use another --out for --ddt {ddt}")
+    DDT = ddt if ddt is not None else recorded
+    if DDT is not None and recorded is None:
+        params["ddt"] = DDT
+        with open(path, "w") as f:
+            json.dump(params, f)
             f.write("\n")
 
 
@@ -249,6 +276,13 @@ def write_case(case, phi, cpd, L, seed, end_time, write_interval=WRITE_INTERVAL,
     os.makedirs(case)
     shutil.copytree(TUTORIAL / "system", os.path.join(case, "system"))
     shutil.copytree(TUTORIAL / "0.orig", os.path.join(case, "0"))
+    if DDT is not None:
+        schemes = os.path.join(case, "system", "fvSchemes")
+        text, n = re.subn(r"(ddtSchemes\s*\{\s*default\s+)\w+;", rf"\g<1>{DDT};",
+                          open(schemes).read())
+        if n != 1:
+            sys.exit(f"hinderedSettling: no ddtSchemes default in {schemes}")
+        open(schemes, "w").write(text)
     os.makedirs(os.path.join(case, "constant"))
     single = dict(dict(dt=None, motion="free", ubar=None), **single) if single else None
     n = single["n"] if single else cpd * L
@@ -652,11 +686,15 @@ def main():
         p.add_argument("--ga", type=float, default=None,
                        help=f"Galileo number of a new results folder (default {DEFAULT_GA:g}); "
                             "a folder keeps the one it was made with")
+        p.add_argument("--ddt", choices=DDT_SCHEMES, default=None,
+                       help="time scheme of a new results folder (default: the "
+                            "periodicSuspension tutorial's); a folder keeps the one it was made with")
     args = ap.parse_args()
     if args.out is None:
         args.out = str(HERE / ("run-quick" if args.cmd == "quick" else "."))
     args.out = os.path.abspath(args.out)
     set_galileo(os.path.join(args.out, "results"), args.ga)
+    set_time_scheme(os.path.join(args.out, "results"), args.ddt)
     {"reference": do_reference, "run": do_run, "plot": do_plot, "quick": do_quick,
      "array": do_array, "held": do_held}[args.cmd](args)
 

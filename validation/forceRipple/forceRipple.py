@@ -141,14 +141,12 @@ def re_name(cpd, motion, ddt, co):
     return f"re10-c{cpd}-{motion}-{ddt}" + ("" if co == 0.25 else f"-co{co:g}")
 
 
-def run_one_re(name, cpd, motion, ddt, co):
-    """One run of the Re 10 campaign; the drag history goes to results/<name>.dat."""
-    case = os.path.join(HERE, "run", name)
-    if os.path.exists(case):
-        subprocess.run(["rm", "-rf", case], check=True)
+def write_re_case(case, cpd, motion, ddt, co, t_end, debug=False):
+    """Write and mesh a run of the Re 10 campaign in case (see runRe); debug: with the
+    module's debug output. Returns its step and number of steps."""
     h = 1.0 / cpd
     dt = co * h / RE_U_BODY
-    steps = int(round(RE_T_END / dt))
+    steps = int(round(t_end / dt))
     # the body starts off the mesh lines; the fixed twin sits at the same point
     centre = (0.0, 0.31 * h, 0.17 * h)
     if motion == "moving":
@@ -162,8 +160,20 @@ def run_one_re(name, cpd, motion, ddt, co):
     refined_box_mesh(case, ["--box", *map(str, (-half, half) * 3),
                             "--fine", *map(str, (-half, half) * 3), "--h", f"{h:.12g}",
                             "--periodic", "x", "--periodic", "y", "--periodic", "z"])
+    if debug:
+        with open(os.path.join(case, "system", "controlDict"), "a") as f:
+            f.write("\nDebugSwitches\n{\n    immersedBodies  1;\n}\n")
     with open(os.path.join(case, "log.blockMesh"), "w") as out:
         subprocess.run(["blockMesh"], cwd=case, stdout=out, stderr=subprocess.STDOUT, check=True)
+    return dt, steps
+
+
+def run_one_re(name, cpd, motion, ddt, co):
+    """One run of the Re 10 campaign; the drag history goes to results/<name>.dat."""
+    case = os.path.join(HERE, "run", name)
+    if os.path.exists(case):
+        subprocess.run(["rm", "-rf", case], check=True)
+    dt, steps = write_re_case(case, cpd, motion, ddt, co, RE_T_END)
     print(f"{name}: {mesh_cells(case)} cells, dt {dt:.4g}, {steps} steps", flush=True)
     rc = run_logged(["nice", "-n", "10", "pimpleFoam"], case, "log.solver")
     if rc != 0:
@@ -209,20 +219,8 @@ def do_split():
     cpd, co, t_end = 8, 0.25, 3.0
     case = os.path.join(HERE, "run", "re10-split")
     subprocess.run(["rm", "-rf", case], check=True)
+    dt, steps = write_re_case(case, cpd, "moving", "Euler", co, t_end, debug=True)
     h = 1.0 / cpd
-    dt = co * h / RE_U_BODY
-    steps = int(round(t_end / dt))
-    caseWriter.write_case(case, 1.0, "x", BOX, cpd, dt, steps * dt, nu=RE_NU, ddt="Euler",
-                          write_interval=steps, centre=(0.0, 0.31 * h, 0.17 * h),
-                          ubar=(RE_U_MEAN, 0.0, 0.0), body_velocity=(RE_U_BODY, 0.0, 0.0))
-    half = 0.5 * BOX
-    refined_box_mesh(case, ["--box", *map(str, (-half, half) * 3),
-                            "--fine", *map(str, (-half, half) * 3), "--h", f"{h:.12g}",
-                            "--periodic", "x", "--periodic", "y", "--periodic", "z"])
-    with open(os.path.join(case, "system", "controlDict"), "a") as f:
-        f.write("\nDebugSwitches\n{\n    immersedBodies  1;\n}\n")
-    with open(os.path.join(case, "log.blockMesh"), "w") as out:
-        subprocess.run(["blockMesh"], cwd=case, stdout=out, stderr=subprocess.STDOUT, check=True)
     if run_logged(["pimpleFoam"], case, "log.solver") != 0:
         raise RuntimeError(f"pimpleFoam failed in {case} (see log.solver)")
     vec = r"\(([^)]*)\)"
@@ -321,13 +319,19 @@ def do_plot():
         ax.plot(d[:, 0] * U_BODY / h, (d[:, 1] - 1) * 100,
                 "-" if r["forcing"] == "surfaceCorrected" else "--",
                 label=f"{r['forcing']}, {r['cpd']} cells/D")
-    ax.set_xlabel("distance travelled [cells]")
+    finish_figure(fig, ax, "distance travelled [cells]",
+                  "Drag of a sphere moving through the cells (Stokes flow)", "forceRipple.png", 8)
+
+
+def finish_figure(fig, ax, xlabel, title, name, legend_size):
+    """Labels, grid and legend of a drag figure, saved as results/name."""
+    ax.set_xlabel(xlabel)
     ax.set_ylabel("F_x / mean - 1  [%]")
-    ax.set_title("Drag of a sphere moving through the cells (Stokes flow)")
+    ax.set_title(title)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=legend_size)
     fig.tight_layout()
-    fig.savefig(os.path.join(RESULTS, "forceRipple.png"), dpi=120)
+    fig.savefig(os.path.join(RESULTS, name), dpi=120)
 
 
 def plot_re(plt, metrics):
@@ -370,13 +374,8 @@ def plot_re(plt, metrics):
         ax.plot((t - t[0]) * RE_U_BODY / h, (d[last, 1] / np.mean(d[last, 1]) - 1) * 100,
                 ".-" if kw["ddt"] == "backward" else ".--",
                 label=f"{kw['cpd']} cells/D, {kw['ddt']}, co {kw['co']:g}")
-    ax.set_xlabel("distance travelled [cells] (the last two)")
-    ax.set_ylabel("F_x / mean - 1  [%]")
-    ax.set_title("Drag of a sphere moving through the cells at Re 10")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(RESULTS, "forceRippleRe10.png"), dpi=120)
+    finish_figure(fig, ax, "distance travelled [cells] (the last two)",
+                  "Drag of a sphere moving through the cells at Re 10", "forceRippleRe10.png", 7)
     return md
 
 

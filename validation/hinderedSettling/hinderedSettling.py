@@ -9,7 +9,8 @@
     hinderedSettling.py plot [--out DIR]
     hinderedSettling.py quick [--out DIR]
     (every command also takes --ga GA: the Galileo number of a new DIR, default 20, and
-    --ddt Euler|backward: the time scheme of a new DIR, default the tutorial's)
+    --ddt Euler|backward: the time scheme of a new DIR, default the tutorial's; the
+    reference, a steady fixed sphere, keeps its own)
 
 reference: the single sphere's terminal velocity on the mesh of the suspensions (cpd
      cells per D): the sphere held fixed in a uniform stream (validation/finiteReynoldsDrag's

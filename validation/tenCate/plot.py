@@ -56,15 +56,18 @@ def load_run(path):
 
 def landing(t, z, w, fh, rho_f):
     """The landing, from the first touch (gap <= 0) on: the largest downward hydrodynamic
-    force over the buoyant weight, the largest overlap (in d) and the largest upward speed
-    (over u_max)."""
+    force over the buoyant weight, the largest overlap (in d), the largest upward speed
+    (over u_max) and the largest gap (in d). An upward speed with the gap never opening
+    beyond the lubrication's saturation gap is the contact spring giving back its overlap,
+    not a rebound off the floor."""
     touch = np.flatnonzero(z - D / 2 <= 0)
     if not len(touch):
         return None
     after = slice(touch[0], None)
     weight = (1120.0 - rho_f) * 9.81 * np.pi * D ** 3 / 6
     return dict(push=float(-fh[after].min() / weight), overlap=float(-(z[after] - D / 2).min() / D),
-                rebound=float(max(w[after].max(), 0.0) / -w.min()))
+                rebound=float(max(w[after].max(), 0.0) / -w.min()),
+                maxGapAfter=float((z[after] - D / 2).max() / D), touchTime=float(t[touch[0]]))
 
 
 def gap_from_velocity(gap_ref, u_ref, gap0):
@@ -110,6 +113,11 @@ def main():
         inside = u_ref[:, 0] <= t[-1]
         u_sim = np.interp(u_ref[inside, 0], t, w)
         rms_u = np.sqrt(np.mean((u_sim - u_ref[inside, 1]) ** 2)) / uref
+        # the same with the sphere held at rest from its first touch: what the contact's
+        # motion after the touch adds to the whole-curve error
+        w_rest = np.where(t >= land["touchTime"], 0.0, w) if land else w
+        u_rest = np.interp(u_ref[inside, 0], t, w_rest)
+        rms_u_rest = np.sqrt(np.mean((u_rest - u_ref[inside, 1]) ** 2)) / uref
         gap_sim = np.interp(gap_ref[:, 0], t, (z - D / 2) / D)
         inside_g = gap_ref[:, 0] <= t[-1]
         max_gap = np.max(np.abs(gap_sim[inside_g] - gap_ref[inside_g, 1]))
@@ -145,6 +153,9 @@ def main():
                          landingPushOverWeight=land["push"] if land else "",
                          landingMaxOverlap=land["overlap"] if land else "",
                          landingReboundOverUmax=land["rebound"] if land else "",
+                         landingMaxGapAfterTouch=land["maxGapAfter"] if land else "",
+                         landingTouchTime=land["touchTime"] if land else "",
+                         rmsUErrorAtRestAfterTouch=rms_u_rest if land else "",
                          contact=bool(len(closed))))
         if name not in figs:
             fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
@@ -183,6 +194,20 @@ def main():
                     f"| {100 * r['rmsUErrorApproach']:.1f} % | {r['maxGapErrorApproach']:.3f} "
                     f"| {r['maxGapErrorApproachShifted']:.3f} ({r['startOffset']:+.3f}) "
                     f"| {r['maxGapErrorVsVelocityData']:.3f} | {r['dataInconsistency']:.3f} |\n")
+        f.write("\nThe landing (runs that touched the floor): the first touch, the largest downward "
+                "hydrodynamic force over the buoyant weight after it, the largest overlap, the largest "
+                "upward speed, the largest gap after the touch, and the whole-curve velocity error with "
+                "the sphere held at rest from its touch\n\n"
+                "| case | forcing | cells/D | first touch t (s) | push / weight | max overlap / d "
+                "| max upward speed / u_max | max gap after touch / d | rms u error / u_max "
+                "| the same, at rest from the touch |\n|---|---|---|---|---|---|---|---|---|---|\n")
+        for r in rows:
+            if r["landingTouchTime"] == "":
+                continue
+            f.write(f"| {r['case']} | {r['forcing']} | {r['cpd']} | {r['landingTouchTime']:.4f} "
+                    f"| {r['landingPushOverWeight']:.1f} | {r['landingMaxOverlap']:.4f} "
+                    f"| {r['landingReboundOverUmax']:.3f} | {r['landingMaxGapAfterTouch']:+.5f} "
+                    f"| {100 * r['rmsUError']:.1f} % | {100 * r['rmsUErrorAtRestAfterTouch']:.1f} % |\n")
     metrics = {}
     for r in rows:
         key = f"{r['case']}_{r['cpd']}" + ("" if not r["variant"] else f"_{r['variant'].replace('-', '_')}")
@@ -197,6 +222,9 @@ def main():
             metrics[f"{key}_landing_push_over_weight"] = round(r["landingPushOverWeight"], 3)
             metrics[f"{key}_landing_max_overlap_d"] = round(r["landingMaxOverlap"], 5)
             metrics[f"{key}_landing_rebound_over_umax"] = round(r["landingReboundOverUmax"], 4)
+            metrics[f"{key}_landing_max_gap_after_touch_d"] = round(r["landingMaxGapAfterTouch"], 5)
+            metrics[f"{key}_landing_touch_time_s"] = round(r["landingTouchTime"], 4)
+            metrics[f"{key}_rms_u_error_pct_at_rest_after_touch"] = round(100 * r["rmsUErrorAtRestAfterTouch"], 4)
     metrics.update(cost_of_target(rows, os.path.join(here, "results", "cost.md")))
     with open(os.path.join(here, "results", "metrics.json"), "w") as f:
         json.dump(metrics, f, indent=1, sort_keys=True)

@@ -105,6 +105,7 @@ void Foam::bodyIntegrator::setHydrodynamicAccelerations
     immersedBody& body,
     const collision::BodyState& end,
     const scalar dt,
+    const immersedSpheroids::ddtCoefficients& ddt,
     const vector& FcMean,
     const vector& TcMean
 )
@@ -116,25 +117,33 @@ void Foam::bodyIntegrator::setHydrodynamicAccelerations
     {
         return;
     }
-    // the step's velocity change without the collision force's: the
-    // virtual-mass term of the next step (coupledBodySet::advance)
+    // the step's velocity change without the collision force's and its
+    // difference as the fluid solve of the next step takes it,
+    // (c dU - c00 dU_last)/dt: the virtual-mass term of the next step
+    // (coupledBodySet::advance)
     const bodyState& start = body.state();
-    vector a = (toFoam(end.velocity) - start.velocity)/dt;
-    vector alpha = (toFoam(end.angularVelocity) - start.angularVelocity)/dt;
+    vector dU = toFoam(end.velocity) - start.velocity;
+    vector dOmega = toFoam(end.angularVelocity) - start.angularVelocity;
     if (body.motion().isFreeInTranslation())
     {
-        a -= FcMean/body.mass();
+        dU -= FcMean*dt/body.mass();
     }
     if (body.motion().isFreeInRotation())
     {
-        alpha -=
+        dOmega -=
             toFoam
             (
                 collision::inverseWorldInertia(end.orientation, toCore(body.bodyInertia()))
             )
-          & TcMean;
+          & TcMean*dt;
     }
-    body.setAccelerations(a, alpha);
+    body.setAccelerations
+    (
+        (ddt.c*dU - ddt.c00*body.velocityIncrement())/dt,
+        (ddt.c*dOmega - ddt.c00*body.angularVelocityIncrement())/dt,
+        dU,
+        dOmega
+    );
 }
 
 
@@ -142,7 +151,8 @@ void Foam::bodyIntegrator::advance
 (
     PtrList<immersedBody>& bodies,
     const scalar t0,
-    const scalar dt
+    const scalar dt,
+    const immersedSpheroids::ddtCoefficients& ddt
 )
 {
     using immersedSpheroids::toCore;
@@ -152,7 +162,7 @@ void Foam::bodyIntegrator::advance
     coupledBodySet set
     (
         bodies, fluidDensity_, g_, virtualMass_, collision_->filmGap(),
-        collision_->cellSize()
+        collision_->cellSize(), ddt, dt
     );
     std::vector<collision::BodyState> states(nBodies);
     forAll(bodies, i)
@@ -185,7 +195,10 @@ void Foam::bodyIntegrator::advance
 
     forAll(bodies, i)
     {
-        setHydrodynamicAccelerations(bodies[i], states[i], dt, FcMean[i], TcMean[i]);
+        setHydrodynamicAccelerations
+        (
+            bodies[i], states[i], dt, ddt, FcMean[i], TcMean[i]
+        );
         bodies[i].state() = toFoam(states[i]);
     }
     if (colliding)

@@ -21,7 +21,9 @@ Foam::coupledBodySet::coupledBodySet
     const vector& g,
     const scalar virtualMass,
     const scalar filmGap,
-    const scalar cellSize
+    const scalar cellSize,
+    const immersedSpheroids::ddtCoefficients& ddt,
+    const scalar fluidDeltaT
 )
 :
     bodies_(bodies),
@@ -29,7 +31,9 @@ Foam::coupledBodySet::coupledBodySet
     g_(g),
     virtualMass_(virtualMass),
     filmGap_(filmGap),
-    cellSize_(cellSize)
+    cellSize_(cellSize),
+    ddt_(ddt),
+    fluidDeltaT_(fluidDeltaT)
 {}
 
 
@@ -108,30 +112,40 @@ void Foam::coupledBodySet::advance
     const vector Fc = toFoam(fc);
     const vector Tc = toFoam(tc);
 
-    // the virtual mass: C_v rho_f V plus the fluid outside the body that the
-    // last step's forcing held to it (both lagged in the explicit force),
-    // implicit on the left, with the last fluid step's hydrodynamic
-    // accelerations on the right (held over the sub-steps like the force, so
-    // that sub-stepping does not iterate the lag away); the collision force
-    // acts on the body's own mass and inertia
+    // the virtual mass m_v: C_v rho_f V plus the fluid outside the body that
+    // the last step's forcing held to it (both lagged in the explicit
+    // force), m_v D(U) implicit on the left (c m_v) and lagged on the right,
+    // D the fluid solve's time difference (held over the sub-steps like the
+    // force, so that sub-stepping does not iterate the lag away); the
+    // collision force acts on the body's own mass and inertia
     const scalar beta = virtualMass_*fluidDensity_/body.density();
     const scalar m = body.mass();
-    const scalar addedMass = beta*m + body.heldMass();
+    const scalar virtualMass = beta*m + body.heldMass();
+    const scalar addedMass = ddt_.c*virtualMass;
     const vector J = body.bodyInertia();
     bodyState state = toFoam(s);
     const tensor R = state.R();
     const symmTensor heldBody = symm(R.T() & body.heldInertia() & R);
-    const vector addedInertia = beta*J + heldBody.diag();
-    const tensor addedWorld =
-        toFoam(collision::worldInertia(s.orientation, toCore(addedInertia)));
+    const vector virtualInertia = beta*J + heldBody.diag();
+    const vector addedInertia = ddt_.c*virtualInertia;
+    const tensor virtualWorld =
+        toFoam(collision::worldInertia(s.orientation, toCore(virtualInertia)));
+    const tensor addedWorld = ddt_.c*virtualWorld;
     const tensor JinvWorld =
         toFoam(collision::inverseWorldInertia(s.orientation, toCore(J)));
 
     vector impulse = (externalForce(i) + (1 + addedMass/m)*Fc)*dt;
     vector angularImpulse =
         (body.hydroTorque() + Tc + (addedWorld & (JinvWorld & Tc)))*dt;
-    impulse += addedMass*body.acceleration()*dt;
-    angularImpulse += dt*(addedWorld & body.angularAcceleration());
+    vector lagged = body.acceleration();
+    vector angularLagged = body.angularAcceleration();
+    if (ddt_.c00 != 0)
+    {
+        lagged += ddt_.c00*body.velocityIncrement()/fluidDeltaT_;
+        angularLagged += ddt_.c00*body.angularVelocityIncrement()/fluidDeltaT_;
+    }
+    impulse += virtualMass*lagged*dt;
+    angularImpulse += dt*(virtualWorld & angularLagged);
 
     body.motion().advance
     (

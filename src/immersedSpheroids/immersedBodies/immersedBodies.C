@@ -524,8 +524,15 @@ void Foam::immersedBodies::update(const volVectorField& U)
 
     loads_.update(bodies_, *forcing_, U, fluidDensity_, solveDdt_, lastDeltaT_, debug);
     const double loadsCpu = split();
+    // the coefficients of the fluid solve that takes the bodies' new
+    // velocities (the virtual-mass term and the forcing of that solve)
+    const immersedSpheroids::ddtCoefficients ddt =
+        immersedSpheroids::ddtCoefficients::of
+        (
+            ddtScheme_, time.timeIndex(), dt, time.deltaT0Value()
+        );
     integrator_->collision().resetSubStepCpu();
-    integrator_->advance(bodies_, t0, dt);
+    integrator_->advance(bodies_, t0, dt, ddt);
     for (immersedBody& body : bodies_)
     {
         body.wrapCentre(domain_);
@@ -538,12 +545,6 @@ void Foam::immersedBodies::update(const volVectorField& U)
     immersedSpheroids::checkInsideMesh(mesh_, domain_, bodies_, afterStep);
     const double checksCpu = split();
     forcing_->updateCells(bodies_);
-
-    const immersedSpheroids::ddtCoefficients ddt =
-        immersedSpheroids::ddtCoefficients::of
-        (
-            ddtScheme_, time.timeIndex(), dt, time.deltaT0Value()
-        );
     forcing_->assemble(bodies_, penaltyRatio_*dt, dt, ddt.c);
     meanFlow_->update(bodies_, fluidDensity_, integrator_->g(), U, dt, ddt.c);
     solveDdt_ = ddt;

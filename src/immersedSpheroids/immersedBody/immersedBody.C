@@ -371,6 +371,8 @@ void Foam::immersedBody::writeState(Ostream& os) const
     os.writeEntry("fluidAngularMomentum0", fluidAngularMomentum0_);
     os.writeEntry("acceleration", acceleration_);
     os.writeEntry("angularAcceleration", angularAcceleration_);
+    os.writeEntry("velocityIncrement", velocityIncrement_);
+    os.writeEntry("angularVelocityIncrement", angularVelocityIncrement_);
     os.writeEntry("unwrapShift", unwrapShift_);
 }
 
@@ -404,6 +406,10 @@ void Foam::immersedBody::readState(const dictionary& dict)
     acceleration_ = readCheckedOrDefault<vector>(dict, "acceleration", Zero, vec);
     angularAcceleration_ =
         readCheckedOrDefault<vector>(dict, "angularAcceleration", Zero, vec);
+    velocityIncrement_ =
+        readCheckedOrDefault<vector>(dict, "velocityIncrement", Zero, vec);
+    angularVelocityIncrement_ =
+        readCheckedOrDefault<vector>(dict, "angularVelocityIncrement", Zero, vec);
     unwrapShift_ = readCheckedOrDefault<vector>
     (
         dict, "unwrapShift", Zero,

@@ -27,7 +27,11 @@ Description
        trajectories in vacuum through a contact (integratorTests.C);
     6. the surface-corrected penalty of a moving sphere: every cell's
        equation from the method's definition, the force and torque against
-       the fluid's momentum (surfacePenaltyTests.C).
+       the fluid's momentum (surfacePenaltyTests.C);
+    7. the virtual-mass stabilisation of a light body in a model fluid
+       whose lagged reaction is the added-mass force under the solve's own
+       time difference (Euler, backward): the added-mass acceleration
+       without alternation (virtualMassTests.C).
 
 Usage
     Test-immersedBodies -case CASE -volumeMeshes '(vol16 vol32 vol64)'
@@ -95,7 +99,7 @@ int main(int argc, char *argv[])
         "parts",
         "(name ...)",
         "run only these parts: solidFraction motion penalty badInput integrator"
-        " surfacePenalty"
+        " surfacePenalty virtualMass"
     );
     #include "setRootCase.H"
     #include "createTime.H"
@@ -104,7 +108,7 @@ int main(int argc, char *argv[])
     wordList parts
     ({
         "solidFraction", "motion", "penalty", "badInput", "integrator",
-        "surfacePenalty"
+        "surfacePenalty", "virtualMass"
     });
     args.readListIfPresent("parts", parts);
 
@@ -143,6 +147,11 @@ int main(int argc, char *argv[])
     {
         Info<< nl << "==== 6. Surface-corrected penalty" << endl;
         testSurfacePenalty(runTime, mesh);
+    }
+    if (parts.found("virtualMass"))
+    {
+        Info<< nl << "==== 7. Virtual mass under the fluid's time difference" << endl;
+        testVirtualMass(mesh);
     }
 
     // OpenFOAM v1912's argList destructor ends the process with

@@ -1,0 +1,157 @@
+/*---------------------------------------------------------------------------*\
+  spheroidFoam: particle-resolved flows of immersed spheroids for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    7. The virtual-mass stabilisation under the fluid's own time difference.
+    A light sphere (rho_p/rho_f = 0.1, so C_v rho_f V = 5 m with C_v 0.5)
+    in a model fluid whose reaction to the velocity the body imposes is the
+    added-mass force -m_v D(U) (D the difference the fluid solve applies,
+    Euler or backward; m_v = C_v rho_f V, nothing held), plus a force F and
+    a torque T that double after five steps; stepped from rest by
+    bodyIntegrator::advance as coupled runs step bodies. With the lag
+    cancelled the increments obey (m + c m_v) dU_{n+1} = F dt + c00 m_v dU_n:
+    after the jump they tend to the added-mass acceleration F/(m + m_v)
+    without changing sign about it (root c00 m_v/(m + c m_v) = 0.29 with
+    backward, 0 with Euler). A virtual mass that used dU/dt under a
+    backward solve leaves the root -0.89 here: increments alternating about
+    the limit, 3e-3 off it after 40 steps. The rotation likewise.
+    Constant/g (zero) is written for the test and removed after it.
+\*---------------------------------------------------------------------------*/
+
+#include "immersedBodiesTests.H"
+#include "immersedBody.H"
+#include "bodyIntegrator.H"
+#include "ddtCoefficients.H"
+#include "filmCorrection.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+
+using namespace testChecks;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+using namespace immersedBodiesTests;
+using immersedSpheroids::ddtCoefficients;
+
+//- Step the light body in the model fluid with the scheme's differences;
+//  check the last increment against the limit and that no increment
+//  changes sign about it after the jump
+void runModelFluid
+(
+    const fvMesh& mesh,
+    const ddtCoefficients::scheme scheme,
+    const word& name
+)
+{
+    const scalar rhoF = 1000;
+    const scalar Cv = 0.5;
+    PtrList<immersedBody> bodies(1);
+    bodies.set
+    (
+        0,
+        new immersedBody
+        (
+            "light",
+            parse
+            (
+                "semiAxes (0.05 0.05 0.05); density 100; centre (0.5 0.5 0.5);"
+                "motion { type free; }",
+                "test/light"
+            )
+        )
+    );
+    immersedBody& body = bodies[0];
+    const dictionary properties = parse("filmStabilisation no;", "test/virtualMass");
+    const filmCorrection film(properties, mesh, 0, true);
+    bodyIntegrator integrator(mesh, properties, bodies, rhoF, 1, Cv, film);
+
+    const scalar m = body.mass();
+    const scalar mv = Cv*rhoF*body.volume();
+    const scalar Jv = Cv*rhoF/body.density()*body.bodyInertia().x();
+    const scalar J = body.bodyInertia().x();
+    const vector F0(0, 0, 2e-3);
+    const vector T0(1e-6, 0, 0);
+    const label jumpStep = 5;
+    const vector aLimit = 2*F0/(m + mv);
+    const vector alphaLimit = 2*T0/(J + Jv);
+    const scalar dt = 1e-3;
+
+    // the velocities the fluid saw: U^n, U^{n-1}, U^{n-2}
+    vector U = Zero, U0 = Zero, U00 = Zero;
+    vector W = Zero, W0 = Zero, W00 = Zero;
+    ddtCoefficients solve;      // the solve that produced the force
+    bool alternated = false;
+    scalar lastDev = 0, lastAngularDev = 0;
+    scalar prevSign = 0, prevAngularSign = 0;
+    const label nSteps = 40;
+    for (label stepi = 1; stepi <= nSteps; ++stepi)
+    {
+        // the model fluid's reaction to the velocities it saw
+        const vector D = (solve.c*U - solve.c0*U0 + solve.c00*U00)/dt;
+        const vector DW = (solve.c*W - solve.c0*W0 + solve.c00*W00)/dt;
+        const scalar load = stepi <= jumpStep ? 1 : 2;
+        body.setHydro(load*F0 - mv*D, load*T0 - Jv*DW);
+
+        const ddtCoefficients next = ddtCoefficients::of(scheme, stepi, dt, dt);
+        integrator.advance(bodies, (stepi - 1)*dt, dt, next);
+        const vector Unew = body.state().velocity;
+        const vector Wnew = body.state().angularVelocity;
+
+        const scalar dev = ((Unew - U)/dt - aLimit).z()/aLimit.z();
+        const scalar angularDev = ((Wnew - W)/dt - alphaLimit).x()/alphaLimit.x();
+        // a change of sign about the limit, above round-off
+        if (stepi > jumpStep + 1 && mag(dev) > 1e-12 && mag(angularDev) > 1e-12)
+        {
+            alternated =
+                alternated || dev*prevSign < 0 || angularDev*prevAngularSign < 0;
+        }
+        prevSign = mag(dev) > 1e-12 ? sign(dev) : 0;
+        prevAngularSign = mag(angularDev) > 1e-12 ? sign(angularDev) : 0;
+        lastDev = mag(dev);
+        lastAngularDev = mag(angularDev);
+
+        U00 = U0; U0 = U; U = Unew;
+        W00 = W0; W0 = W; W = Wnew;
+        solve = next;
+    }
+    Info<< "    " << name << ": acceleration after " << nSteps
+        << " steps within " << lastDev << " (angular " << lastAngularDev
+        << ") of F/(m + m_v); increments alternating about it: "
+        << alternated << endl;
+    check
+    (
+        lastDev < 1e-9 && lastAngularDev < 1e-9,
+        "virtual mass, " + name + ": the light body reaches the added-mass"
+        " acceleration F/(m + m_v) (and T/(J + J_v))"
+    );
+    check
+    (
+        !alternated,
+        "virtual mass, " + name + ": no alternation from step to step"
+    );
+}
+
+} // End anonymous namespace
+
+
+void immersedBodiesTests::testVirtualMass(const fvMesh& mesh)
+{
+    const fileName gFile(mesh.time().path()/mesh.time().constant()/"g");
+    {
+        OFstream os(gFile);
+        os  << "FoamFile { version 2.0; format ascii;"
+            << " class uniformDimensionedVectorField; object g; }" << nl
+            << "dimensions [0 1 -2 0 0 0 0];" << nl
+            << "value (0 0 0);" << nl;
+    }
+    runModelFluid(mesh, ddtCoefficients::scheme::Euler, "Euler");
+    runModelFluid(mesh, ddtCoefficients::scheme::backward, "backward");
+    rm(gFile);
+}
+
+
+// ************************************************************************* //

@@ -5,8 +5,9 @@
 
 The case's parameters (nu, the body, the fluid density, g) are read from its dictionaries.
 Settling speed and Reynolds number, the tilt of the symmetry axis from the vertical (90 deg =
-broadside-on) against time, the landing on the bottom (the first collision force), the solver's
-wall and CPU time. Needs the project's environment (etc/bashrc, for the shared
+broadside-on) against time, the mean settling speed broadside-on and the ripple of the
+hydrodynamic force there (its standard deviation from step to step over its mean), the landing
+on the bottom (the first collision force), the solver's wall and CPU time. Needs the project's environment (etc/bashrc, for the shared
 helpers in applications/utilities/plotBodies/caseSummary.py) and Debian's python3-h5py and
 python3-numpy (/usr/bin/python3).
 """
@@ -53,11 +54,25 @@ def main():
         v = f["velocity"][:, 0, :]
         q = f["orientation"][:, 0, :]
         fc = f["collisionForce"][:, 0, :]
+        fh = f["hydroForce"][:, 0, :]
     tilt = tilt_degrees(q)
     w = -v[:, 2]
     k = int(np.argmax(w))
     landed = np.flatnonzero(np.linalg.norm(fc, axis=1) > 0)
     broad = np.flatnonzero(tilt > 80)
+    # broadside-on, from the turn to 0.1 s before the first contact
+    steady = np.zeros(len(t), dtype=bool)
+    if len(broad):
+        steady = t >= t[broad[0]]
+        if len(landed):
+            steady &= t <= t[landed[0]] - 0.1
+    if steady.sum() > 10:
+        force = np.linalg.norm(fh[steady], axis=1)
+        broadside = (f"{w[steady].mean() * 1e3:.1f} mm/s, force ripple "
+                     f"{100 * force.std() / force.mean():.1f} % "
+                     f"(t = {t[steady][0]:.2f}-{t[steady][-1]:.2f} s)")
+    else:
+        broadside = "not broadside-on for 10 steps before landing"
     rows = [("equal-volume diameter D, Galileo number sqrt((rho_p/rho_f - 1) g D^3)/nu",
              f"{d * 1e3:.2f} mm, {galileo:.1f}"),
             ("simulated time", f"{t[-1]:.3f} s ({len(t) - 1} steps)"),
@@ -66,6 +81,8 @@ def main():
             ("tilt from the vertical at the start", f"{tilt[0]:.1f} deg"),
             ("tilt at the largest speed", f"{tilt[k]:.1f} deg"),
             ("broadside-on (tilt > 80 deg) from", f"t = {t[broad[0]]:.3f} s" if len(broad) else "never"),
+            ("broadside-on until 0.1 s before landing: mean settling speed, std/mean of the hydrodynamic force",
+             broadside),
             ("lateral drift before landing",
              f"{np.hypot(*(c[landed[0] if len(landed) else -1, :2] - c[0, :2])) / d:.2f} D"),
             ("first contact with the bottom", f"t = {t[landed[0]]:.3f} s" if len(landed) else "none"),

@@ -201,16 +201,22 @@ def re_ripple_pct(times, fx, cpd):
     return 100 * float(np.std(f - fit)) / abs(float(np.mean(f)))
 
 
-def do_run_re(args):
+def run_campaign(args, runs_csv, fields, runs, run_one_case, report):
+    """Run the campaign's cases not yet in runs_csv (all with --force, only those of --only),
+    each recorded in runs_csv as it finishes; report(row) is the line printed for it."""
     os.makedirs(RESULTS, exist_ok=True)
-    done = {r["name"] for r in read_csv(RUNS_RE_CSV)} if not args.force else set()
-    for name, kw in campaign_re():
+    done = {r["name"] for r in read_csv(runs_csv)} if not args.force else set()
+    for name, kw in runs:
         if (args.only and name not in args.only) or name in done:
             continue
-        row = run_one_re(name, **kw)
-        print(f"  -> mean F_x {row['mean_Fx']}, ripple {row['ripple_pct']} %", flush=True)
-        write_csv(RUNS_RE_CSV,
-                  [r for r in read_csv(RUNS_RE_CSV) if r["name"] != name] + [row], RE_FIELDS)
+        row = run_one_case(name, **kw)
+        print("  -> " + report(row), flush=True)
+        write_csv(runs_csv, [r for r in read_csv(runs_csv) if r["name"] != name] + [row], fields)
+
+
+def do_run_re(args):
+    run_campaign(args, RUNS_RE_CSV, RE_FIELDS, campaign_re(), run_one_re,
+                 lambda row: f"mean F_x {row['mean_Fx']}, ripple {row['ripple_pct']} %")
 
 
 def do_split():
@@ -266,15 +272,8 @@ def do_split():
 
 
 def do_run(args):
-    os.makedirs(RESULTS, exist_ok=True)
-    done = {r["name"] for r in read_csv(RUNS_CSV)} if not args.force else set()
-    for name, kw in campaign():
-        if (args.only and name not in args.only) or name in done:
-            continue
-        row = run_one(name, **kw)
-        print(f"  -> ripple {row['ripple_pct']} % (max - min {row['max_minus_min_pct']} %)",
-              flush=True)
-        write_csv(RUNS_CSV, [r for r in read_csv(RUNS_CSV) if r["name"] != name] + [row], FIELDS)
+    run_campaign(args, RUNS_CSV, FIELDS, campaign(), run_one,
+                 lambda row: f"ripple {row['ripple_pct']} % (max - min {row['max_minus_min_pct']} %)")
 
 
 def do_plot():

@@ -34,7 +34,15 @@ Foam::coupledBodySet::coupledBodySet
     cellSize_(cellSize),
     ddt_(ddt),
     fluidDeltaT_(fluidDeltaT)
-{}
+{
+    if (ddt_.c00 != 0 && fluidDeltaT_ <= 0)
+    {
+        FatalErrorInFunction
+            << "A three-level time difference (c00 = " << ddt_.c00
+            << ") needs the fluid step, given as " << fluidDeltaT_
+            << " (it must be positive)" << exit(FatalError);
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

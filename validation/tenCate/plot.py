@@ -93,9 +93,10 @@ def main():
     figs = {}
     for path in runs:
         tag = os.path.basename(path)[:-3]
-        name, cpd, *rest = tag.split("-")       # <case>-<cpd>[-<forcing>][-column<W>]
+        name, cpd, *rest = tag.split("-")       # <case>-<cpd>[-<forcing>][-column<W>][-dt<S>]
         column = next((v[len("column"):] for v in rest if v.startswith("column")), "")
-        forcing = next((v for v in rest if not v.startswith("column")), DEFAULT_FORCING)
+        dt_scale = next((v[len("dt"):] for v in rest if v.startswith("dt")), "")
+        forcing = next((v for v in rest if not v.startswith(("column", "dt"))), DEFAULT_FORCING)
         variant = "-".join(rest)
         t, z, w, fh, fc, info = load_run(path)
         land = landing(t, z, w, fh, FLUID_DENSITY[name])
@@ -142,7 +143,7 @@ def main():
         gap_sim_int = np.interp(t_int[approach], t, (z - D / 2) / D)
         max_gap_vs_u = np.max(np.abs(gap_sim_int - (gap_int[approach] - gap0_ref + gap[0])))
         rows.append(dict(case=name, cpd=int(cpd), forcing=forcing, variant=variant,
-                         column=column or "2.5", cells=info.get("cells", ""),
+                         column=column or "2.5", dtScale=dt_scale or "1", cells=info.get("cells", ""),
                          ranks=info.get("ranks", ""),
                          steps=info.get("steps", ""), wallSeconds=info.get("wallSeconds", ""),
                          umax=umax, umaxRef=uref, umaxError=(umax - uref) / uref,
@@ -166,7 +167,8 @@ def main():
         fig, ax = figs[name]
         style = "-" if not variant else ":"
         label = (f"{cpd} cells/D" + ("" if forcing == DEFAULT_FORCING else f", {forcing}")
-                 + (f", fine column {column} d" if column else ""))
+                 + (f", fine column {column} d" if column else "")
+                 + (f", time step x{dt_scale}" if dt_scale else ""))
         ax[0].plot(t, (z - D / 2) / D, style, label=label)
         ax[1].plot(t, w, style, label=label)
     for name, (fig, ax) in figs.items():
@@ -180,14 +182,14 @@ def main():
     rows.sort(key=lambda r: (r["case"], r["variant"] != "", r["variant"], r["cpd"]))
     write_csv(os.path.join(here, "results", "summary.csv"), rows)
     with open(os.path.join(here, "results", "summary.md"), "w") as f:
-        f.write("| case | forcing | fine column (d) | cells/D | cells | ranks | steps | wall (s) | u_max (m/s) | ref. | u_max error "
+        f.write("| case | forcing | fine column (d) | time step (x default) | cells/D | cells | ranks | steps | wall (s) | u_max (m/s) | ref. | u_max error "
                 "| rms u error / u_max | max gap error / d | compared up to t (s) "
                 "| rms u error, gap > 1 d | max gap error, gap > 1 d | the same, start offset removed "
                 "| max gap error against the data's integrated velocity, gap > 1 d "
                 "| the data's gap curve against their integrated velocity |"
-                "\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
+                "\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
         for r in rows:
-            f.write(f"| {r['case']} | {r['forcing']} | {r['column']} | {r['cpd']} | {r['cells']} | {r['ranks']} | {r['steps']} | {r['wallSeconds']} "
+            f.write(f"| {r['case']} | {r['forcing']} | {r['column']} | {r['dtScale']} | {r['cpd']} | {r['cells']} | {r['ranks']} | {r['steps']} | {r['wallSeconds']} "
                     f"| {r['umax']:.5f} | {r['umaxRef']:.5f} | {100 * r['umaxError']:+.1f} % "
                     f"| {100 * r['rmsUError']:.1f} % | {r['maxGapError']:.3f} | {r['endTime']:.3f}"
                     f"{' (contact)' if r['contact'] else ''} "
@@ -198,13 +200,13 @@ def main():
                 "hydrodynamic force over the buoyant weight after it, the largest overlap, the largest "
                 "upward speed, the largest gap after the touch, and the whole-curve velocity error with "
                 "the sphere held at rest from its touch\n\n"
-                "| case | forcing | cells/D | first touch t (s) | push / weight | max overlap / d "
+                "| case | variant | cells/D | first touch t (s) | push / weight | max overlap / d "
                 "| max upward speed / u_max | max gap after touch / d | rms u error / u_max "
                 "| the same, at rest from the touch |\n|---|---|---|---|---|---|---|---|---|---|\n")
         for r in rows:
             if r["landingTouchTime"] == "":
                 continue
-            f.write(f"| {r['case']} | {r['forcing']} | {r['cpd']} | {r['landingTouchTime']:.4f} "
+            f.write(f"| {r['case']} | {r['variant'] or 'default'} | {r['cpd']} | {r['landingTouchTime']:.4f} "
                     f"| {r['landingPushOverWeight']:.1f} | {r['landingMaxOverlap']:.4f} "
                     f"| {r['landingReboundOverUmax']:.3f} | {r['landingMaxGapAfterTouch']:+.5f} "
                     f"| {100 * r['rmsUError']:.1f} % | {100 * r['rmsUErrorAtRestAfterTouch']:.1f} % |\n")
@@ -238,7 +240,8 @@ def cost_of_target(rows, path):
     steps and core-seconds (wall time x ranks; the runs shared the machine, so upper bounds).
     Writes the table to path; returns its metrics."""
     metrics = {}
-    rows = [r for r in rows if r["column"] == "2.5"]      # the case's own mesh only
+    # the case's own mesh and time step only
+    rows = [r for r in rows if r["column"] == "2.5" and r["dtScale"] == "1"]
     lines = [f"| case | forcing | cells/D run | u_max error at them | coarsest within {COST_TARGET_PCT:g} % "
              "| cells | steps | core-seconds |", "|---|---|---|---|---|---|---|---|"]
     for case in sorted({r["case"] for r in rows}):

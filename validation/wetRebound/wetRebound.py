@@ -70,7 +70,7 @@ CASES = {
 }
 
 FIELDS = ["name", "St_case", "cpd", "maxOverlap", "saturation", "cells", "dt", "steps", "U_release", "U_in", "U_out", "e",
-          "e_spring",
+          "e_spring", "e_after_film", "top_gap_a",
           "St", "e_over_edry", "master", "max_overlap_a", "J_coll", "J_hydro", "J_gravity", "J_hydro_out", "suction", "wall_s", "cpu_s", "host", "date",
           "commit"]
 
@@ -147,6 +147,13 @@ def analyse(h5, name):
         u_out = max(w[left:].max(), 0.0) if left < len(w) else 0.0
     else:
         u_out = u_spring
+    # the largest upward speed once the collision model's forces (contact and film) have
+    # vanished: beyond the lubrication onset on the way out, where the film's loss on the way
+    # out is complete; zero if the sphere falls back before it leaves the film's range
+    left = i0 + (inContact[-1] + 1 if len(inContact) else 0)
+    free = left + np.flatnonzero(fc[left:] == 0)
+    u_after_film = max(w[free[0]:].max(), 0.0) if len(free) else 0.0
+    top_gap = gap[i0:].max()
     # impulses over the steps with a collision force, over m U_in (the forces
     # of row k act over the step that ends at row k; fixed step)
     i1 = touched[-1]
@@ -163,7 +170,7 @@ def analyse(h5, name):
     j_hydro_out = np.sum(fh[up]) * dt / momentum
     suction = max(-fh[up].min(), 0.0) / fc[i0:i1 + 1].max() if len(up) else 0.0
     return dict(t=t, gap=gap / d, w=w, U_in=u_in, U_out=u_out, e=u_out / u_in,
-                e_spring=u_spring / u_in,
+                e_spring=u_spring / u_in, e_after_film=u_after_film / u_in, top_gap_a=top_gap / a,
                 St=RHO_P * u_in * d / (9 * mu), max_overlap_a=max(-gap.min(), 0) / a,
                 J_coll=j_coll, J_hydro=j_hydro, J_gravity=j_gravity, J_hydro_out=j_hydro_out,
                 suction=suction)
@@ -172,7 +179,8 @@ def analyse(h5, name):
 def measured(r):
     """The measured columns of runs.csv from analyse()."""
     return dict(U_in=f"{r['U_in']:.5g}", U_out=f"{r['U_out']:.5g}", e=f"{r['e']:.4f}",
-                e_spring=f"{r['e_spring']:.4f}", St=f"{r['St']:.1f}",
+                e_spring=f"{r['e_spring']:.4f}", e_after_film=f"{r['e_after_film']:.4f}",
+                top_gap_a=f"{r['top_gap_a']:.4f}", St=f"{r['St']:.1f}",
                 e_over_edry=f"{r['e'] / E_DRY:.4f}", master=f"{math.exp(-35 / r['St']):.4f}",
                 max_overlap_a=f"{r['max_overlap_a']:.4f}", J_coll=f"{r['J_coll']:.3f}",
                 J_hydro=f"{r['J_hydro']:.3f}", J_gravity=f"{r['J_gravity']:.3f}",
@@ -215,10 +223,20 @@ def run_one(name, cpd, force, quick, max_overlap=None, saturation=None):
               ignore_extra=True)
 
 
+def after_film_text(r):
+    """Table cells: e/e_dry after the film, its error against the master curve, the top gap."""
+    if not r.get("e_after_film"):
+        return "- | - | -"
+    after = float(r["e_after_film"]) / E_DRY
+    return f"{after:.3f} | {after - float(r['master']):+.3f} | {float(r['top_gap_a']):.2f}"
+
+
 def write_metrics(rows):
     """results/metrics.json: max_abs_deviation_<cpd>, the largest |e/e_dry - exp(-35/St)| over
     the cases run with the default maxOverlap and saturation at that resolution, and
-    cases_<cpd>, how many cases that is (five when the resolution is complete)."""
+    cases_<cpd>, how many cases that is (five when the resolution is complete);
+    max_abs_deviation_after_film_<cpd>, the same with the rebound speed taken once the
+    sphere has left the film's range."""
     metrics = {}
     default = [r for r in rows if r["maxOverlap"] == "0.1" and r["saturation"] == "0.001"]
     for cpd in sorted({int(r["cpd"]) for r in default}):
@@ -226,6 +244,9 @@ def write_metrics(rows):
         metrics[f"max_abs_deviation_{cpd}"] = round(
             max(abs(float(r["e_over_edry"]) - float(r["master"])) for r in sel), 4)
         metrics[f"cases_{cpd}"] = len(sel)
+        if all(r.get("e_after_film") for r in sel):
+            metrics[f"max_abs_deviation_after_film_{cpd}"] = round(
+                max(abs(float(r["e_after_film"]) / E_DRY - float(r["master"])) for r in sel), 4)
     with open(os.path.join(RESULTS, "metrics.json"), "w") as f:
         json.dump(metrics, f, indent=1, sort_keys=True)
         f.write("\n")
@@ -251,14 +272,16 @@ def film_table(rows):
     lines = ["Quasi-steady Stokes film estimate (`film_estimate`: lubrication losses only, from "
              "the onset gap to the saturation gap, in and out) against the runs and the master "
              "curve:", "",
-             "| case | cells/d | saturation | St | e/e_dry run | film estimate | exp(-35/St) |",
-             "|---|---|---|---|---|---|---|"]
+             "| case | cells/d | saturation | St | e/e_dry run | the same after the film | film estimate "
+             "| exp(-35/St) |",
+             "|---|---|---|---|---|---|---|---|"]
     for r in rows:
         if r["maxOverlap"] != "0.1":
             continue
         est = film_estimate(float(r["St"]), int(r["cpd"]), float(r["saturation"]))
         lines.append(f"| St {r['St_case']} | {r['cpd']} | {r['saturation']} | {float(r['St']):.0f} | "
-                     f"{float(r['e_over_edry']):.3f} | {est:.3f} | {float(r['master']):.3f} |")
+                     f"{float(r['e_over_edry']):.3f} | {after_film_text(r).split(' | ')[0]} | "
+                     f"{est:.3f} | {float(r['master']):.3f} |")
     return lines
 
 
@@ -270,9 +293,9 @@ def do_plot():
     if not rows:
         sys.exit("wetRebound: no runs in results/runs.csv")
     lines = ["| case | cells/d | maxOverlap | saturation | U_in [m/s] | St | e | e/e_dry | exp(-35/St) | error | "
-             "e_spring/e_dry | J_coll | J_hydro | J_gravity | J_hydro_out | suction | "
-             "max overlap/a | wall |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "e_spring/e_dry | e/e_dry after the film | its error | top gap/a | J_coll | J_hydro | "
+             "J_gravity | J_hydro_out | suction | max overlap/a | wall |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         r.setdefault("maxOverlap", "")
         r["maxOverlap"] = r["maxOverlap"] or "0.1"
@@ -286,6 +309,7 @@ def do_plot():
                      f"{float(r['U_in']):.3f} | "
                      f"{float(r['St']):.0f} | {float(r['e']):.3f} | {float(r['e_over_edry']):.3f} | "
                      f"{float(r['master']):.3f} | {err:+.3f} | {float(r['e_spring']) / E_DRY:.3f} | "
+                     f"{after_film_text(r)} | "
                      f"{r['J_coll']} | {r['J_hydro']} | {r['J_gravity']} | "
                      f"{r.get('J_hydro_out', '-')} | {r.get('suction', '-')} | "
                      f"{float(r['max_overlap_a']):.3f} | "
@@ -307,6 +331,9 @@ def do_plot():
                     label=f"after leaving the wall, {what}")
         ax.semilogx([float(r["St"]) for r in sel], [float(r["e_spring"]) / E_DRY for r in sel], "^",
                     mfc="none", label=f"end of the spring phase, {what}")
+        if all(r.get("e_after_film") for r in sel):
+            ax.semilogx([float(r["St"]) for r in sel], [float(r["e_after_film"]) / E_DRY for r in sel],
+                        "s", mfc="none", label=f"after the film, {what}")
     ax.set_xlabel("St = rho_p U_in d / (9 mu)")
     ax.set_ylabel("e / e_dry")
     ax.set_ylim(0, 1.05)

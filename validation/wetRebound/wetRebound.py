@@ -320,26 +320,33 @@ def do_plot():
     print("\n".join(lines))
     write_metrics(rows)
 
-    fig, ax = plt.subplots(figsize=(9, 4))
+    # one panel per definition of the rebound speed; the same colour and marker for a
+    # resolution and setting in every panel
+    panels = [("e_over_edry", 1.0, "after leaving the wall (the headline e)"),
+              ("e_spring", 1 / E_DRY, "end of the spring phase"),
+              ("e_after_film", 1 / E_DRY, "after the film (beyond the onset gap)")]
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.4), sharey=True)
     st = np.logspace(0.7, 3.2, 200)
-    ax.semilogx(st, np.exp(-35 / st), "k-", label="exp(-35/St) (Legendre et al.)")
-    for cpd, ov, sat in sorted({(int(r["cpd"]), r["maxOverlap"], r["saturation"]) for r in rows}):
-        sel = [r for r in rows
-               if int(r["cpd"]) == cpd and r["maxOverlap"] == ov and r["saturation"] == sat]
-        what = f"{cpd} cells/d, maxOverlap {ov}" + (f", saturation {sat}" if sat != "0.001" else "")
-        ax.semilogx([float(r["St"]) for r in sel], [float(r["e_over_edry"]) for r in sel], "o",
-                    label=f"after leaving the wall, {what}")
-        ax.semilogx([float(r["St"]) for r in sel], [float(r["e_spring"]) / E_DRY for r in sel], "^",
-                    mfc="none", label=f"end of the spring phase, {what}")
-        if all(r.get("e_after_film") for r in sel):
-            ax.semilogx([float(r["St"]) for r in sel], [float(r["e_after_film"]) / E_DRY for r in sel],
-                        "s", mfc="none", label=f"after the film, {what}")
-    ax.set_xlabel("St = rho_p U_in d / (9 mu)")
-    ax.set_ylabel("e / e_dry")
-    ax.set_ylim(0, 1.05)
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8, loc="center left", bbox_to_anchor=(1.01, 0.5))
-    ax.set_title("Sphere-wall rebound in a viscous fluid (Gondret et al. 2002 cases)")
+    series = sorted({(int(r["cpd"]), r["maxOverlap"], r["saturation"]) for r in rows})
+    markers = "osD^vP"
+    for ax, (key, scale, title) in zip(axes, panels):
+        ax.semilogx(st, np.exp(-35 / st), "k-", label="exp(-35/St) (Legendre et al.)")
+        for k, (cpd, ov, sat) in enumerate(series):
+            sel = [r for r in rows
+                   if int(r["cpd"]) == cpd and r["maxOverlap"] == ov and r["saturation"] == sat]
+            if not all(r.get(key) for r in sel):
+                continue
+            what = f"{cpd} cells/d, maxOverlap {ov}" + (f", saturation {sat}" if sat != "0.001" else "")
+            ax.semilogx([float(r["St"]) for r in sel], [float(r[key]) * scale for r in sel],
+                        markers[k % len(markers)], color=f"C{k}", mfc="none" if ov != "0.1" else None,
+                        label=what)
+        ax.set_xlabel("St = rho_p U_in d / (9 mu)")
+        ax.set_ylim(0, 1.05)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.set_title(title, fontsize=10)
+    axes[0].set_ylabel("e / e_dry")
+    axes[-1].legend(fontsize=8, loc="center left", bbox_to_anchor=(1.01, 0.5))
+    fig.suptitle("Sphere-wall rebound in a viscous fluid (Gondret et al. 2002 cases)")
     fig.tight_layout()
     fig.savefig(os.path.join(RESULTS, "restitution.png"), dpi=120, bbox_inches="tight")
 

@@ -125,12 +125,20 @@ def do_plot():
         r["cpd"], r["incidence"] = int(r["cpd"]), int(r["incidence"])
     metrics = {}
     md = plotDrag.tables(rows, metrics)
+    body_fitted = {}
+    csv_body_fitted = os.path.join(RESULTS, "bodyFitted.csv")
+    if os.path.exists(csv_body_fitted):
+        import bodyFittedTable
+        lines, more = bodyFittedTable.tables(csv_body_fitted)
+        md += [""] + lines
+        metrics.update(more)
+        body_fitted = bodyFittedTable.extrapolated(csv_body_fitted)
     with open(os.path.join(RESULTS, "table.md"), "w") as f:
         f.write("\n".join(md) + "\n")
     with open(os.path.join(RESULTS, "metrics.json"), "w") as f:
         json.dump(metrics, f, indent=1, sort_keys=True)
         f.write("\n")
-    plotDrag.figure(rows, os.path.join(RESULTS, "finiteReynoldsDrag.png"))
+    plotDrag.figure(rows, os.path.join(RESULTS, "finiteReynoldsDrag.png"), body_fitted)
     print("\n".join(md))
 
 

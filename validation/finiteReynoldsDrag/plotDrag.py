@@ -129,7 +129,10 @@ def tables(rows, metrics):
             + [""] + sphere_tables(rows, metrics) + spheroid_tables(rows, metrics))
 
 
-def figure(rows, path):
+def figure(rows, path, body_fitted=None):
+    """body_fitted: {(ar, Re, incidence): (C_D, C_L)} of the body-fitted reference
+    (bodyFitted.py)."""
+    body_fitted = body_fitted or {}
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -144,6 +147,10 @@ def figure(rows, path):
         pts = [(r["Re"], r["C_D"]) for r in rows if r["shape"] == "sphere" and r["cpd"] == cpd]
         if pts:
             a.plot(*zip(*sorted(pts)), m, color="C3", label=f"spheroidFoam, {cpd} cells/D")
+    pts = sorted((re, cd) for (ar, re, inc), (cd, _) in body_fitted.items()
+                 if ar == 1.0 and inc == 0)
+    if pts:
+        a.plot(*zip(*pts), "k*", ms=9, mfc="none", label="body-fitted (bodyFitted.py)")
     a.set_xlabel("Re = U D / nu")
     a.set_ylabel("C_D")
     a.set_title("Fixed sphere")
@@ -159,6 +166,14 @@ def figure(rows, path):
                       label=f"Zastawny et al. 2012, Re {re:g}")
         ax[0, 1].plot([p[0] for p in pts], [p[1] for p in pts], "o", color=c,
                       label=f"spheroidFoam, Re {re:g}")
+        bf = sorted((inc, cd, cl) for (ar, r, inc), (cd, cl) in body_fitted.items()
+                    if ar == 2.5 and r == re)
+        if bf:
+            ax[0, 1].plot([b[0] for b in bf], [b[1] for b in bf], "*", ms=11, mfc="none",
+                          color=c, label=f"body-fitted (bodyFitted.py), Re {re:g}")
+            ax[1, 0].plot([b[0] for b in bf if b[0] == 45], [b[2] for b in bf if b[0] == 45],
+                          "*", ms=11, mfc="none", color=c,
+                          label=f"body-fitted (bodyFitted.py), Re {re:g}")
         ax[1, 0].plot(phis, [ref.linear_resistance_lift(re, p) for p in phis], "--", color=c,
                       label=f"(C_D90 - C_D0) sin cos, Re {re:g}")
         ax[1, 0].plot([p[0] for p in pts], [p[2] for p in pts], "o", color=c,

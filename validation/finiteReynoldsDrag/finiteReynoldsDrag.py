@@ -30,7 +30,6 @@ from pathlib import Path
 import numpy as np
 
 import caseWriter
-import references
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
 from validationTools import cpu_seconds, provenance, read_csv, run_logged, write_csv  # noqa: E402

@@ -102,6 +102,11 @@ def spheroid_tables(rows, metrics):
            f"exact Stokes drag of the AR 2.5 spheroid (24/Re times K = {k0:.4f} and {k90:.4f}, "
            "Oberbeck's formulas, which validation/stokesDrag reproduces within 0.2 % at 16 "
            "cells/D for AR 2)."]
+    m0, m90 = ref.zastawny_stokes_check(re_scale=1.0 / 2.5 ** (1.0 / 3.0))
+    metrics["zastawny_minor_diameter_re_over_exact_stokes_0"] = round(m0, 4)
+    metrics["zastawny_minor_diameter_re_over_exact_stokes_90"] = round(m90, 4)
+    md += [f"Read with Re on the minor diameter 2b (0.737 Re) it gives {100 * (m0 - 1):+.1f} % "
+           f"(along) and {100 * (m90 - 1):+.1f} % (across) there."]
     series = sorted((r for r in rows if r["shape"] == "prolate" and r["Re"] == 100
                      and r["incidence"] == 45), key=lambda r: r["cpd"])
     if len(series) >= 3:

@@ -58,9 +58,10 @@ def stokes_prolate_k(ar):
     return along / (3 * math.pi), across / (3 * math.pi)
 
 
-def zastawny_stokes_check(ar=2.5, re=0.1):
+def zastawny_stokes_check(ar=2.5, re=0.1, re_scale=1.0):
     """Zastawny's C_D0 and C_D90 at Re 0.1 (the lower end of their range) divided by the
-    exact Stokes values 24/Re K: how far the correlation is from the exact low-Re limit."""
+    exact Stokes values 24/Re K: how far the correlation is from the exact low-Re limit.
+    re_scale: the correlation evaluated at re_scale Re (another reading of its Re)."""
     k_along, k_across = stokes_prolate_k(ar)
-    return (zastawny_drag(re, 0.0) / (24 / re * k_along),
-            zastawny_drag(re, 90.0) / (24 / re * k_across))
+    return (zastawny_drag(re * re_scale, 0.0) / (24 / re * k_along),
+            zastawny_drag(re * re_scale, 90.0) / (24 / re * k_across))

@@ -58,6 +58,24 @@ def meridian_nodes(ar, n_eta, outer_radius):
     return W.real, R
 
 
+def polygon(labels):
+    """A face's point labels in order with the repeated ones (the axis) removed."""
+    out = []
+    for p in labels:
+        if p not in out:
+            out.append(int(p))
+    return out
+
+
+def oriented(points, face, towards):
+    """The face with its points ordered so that its normal points along towards."""
+    p = points[face]
+    n = np.zeros(3)
+    for k in range(len(face)):
+        n += np.cross(p[k], p[(k + 1) % len(face)])
+    return face if np.dot(n, towards) > 0 else face[::-1]
+
+
 class _MeshBuilder:
     """Points, cells' faces and patches of the wedge built from the meridian nodes."""
 
@@ -88,20 +106,10 @@ class _MeshBuilder:
     def polygon(self, nodes):
         """Point labels of a face through the (i, j, side) nodes in order, repeated
         labels (the axis) removed."""
-        out = []
-        for n in nodes:
-            p = self.index[n]
-            if p not in out:
-                out.append(p)
-        return out
+        return polygon([self.index[n] for n in nodes])
 
     def oriented(self, face, towards):
-        """The face with its points ordered so that its normal points along towards."""
-        p = self.points[face]
-        n = np.zeros(3)
-        for k in range(len(face)):
-            n += np.cross(p[k], p[(k + 1) % len(face)])
-        return face if np.dot(n, towards) > 0 else face[::-1]
+        return oriented(self.points, face, towards)
 
     def build(self):
         internal, patches = [], {"body": [], "inlet": [], "outlet": [], "front": [], "back": []}
@@ -141,6 +149,36 @@ def _write_list(path, cls, obj, items, fmt):
         out.write(")\n")
 
 
+def write_poly_mesh(case, points, internal, patches, types):
+    """Writes case/constant/polyMesh from the points, the internal faces [(owner,
+    neighbour, face)] in upper-triangular order and the boundary faces {patch: [(owner,
+    face)]}, the patches in the order of types {patch: OpenFOAM patch type}."""
+    faces = [f for _, _, f in internal]
+    owner = [o for o, _, _ in internal]
+    neighbour = [n for _, n, _ in internal]
+    starts = {}
+    for name in types:
+        starts[name] = len(faces)
+        for o, f in patches[name]:
+            faces.append(f)
+            owner.append(o)
+    d = os.path.join(case, "constant", "polyMesh")
+    os.makedirs(d, exist_ok=True)
+    _write_list(os.path.join(d, "points"), "vectorField", "points", points,
+                lambda p: f"({p[0]:.15g} {p[1]:.15g} {p[2]:.15g})")
+    _write_list(os.path.join(d, "faces"), "faceList", "faces", faces,
+                lambda f: f"{len(f)}(" + " ".join(map(str, f)) + ")")
+    _write_list(os.path.join(d, "owner"), "labelList", "owner", owner, str)
+    _write_list(os.path.join(d, "neighbour"), "labelList", "neighbour", neighbour, str)
+    with open(os.path.join(d, "boundary"), "w") as out:
+        out.write(HEADER.format(cls="polyBoundaryMesh", obj="boundary"))
+        out.write(f"\n{len(types)}\n(\n")
+        for name, kind in types.items():
+            out.write(f"    {name}\n    {{\n        type {kind};\n"
+                      f"        nFaces {len(patches[name])};\n        startFace {starts[name]};\n    }}\n")
+        out.write(")\n")
+
+
 def write_mesh(case, ar, n_eta, outer_radius):
     """Writes case/constant/polyMesh; returns the number of cells."""
     if n_eta % 2:
@@ -148,30 +186,7 @@ def write_mesh(case, ar, n_eta, outer_radius):
     X, R = meridian_nodes(ar, n_eta, outer_radius)
     mb = _MeshBuilder(X, R)
     internal, patches = mb.build()
-    order = ["body", "inlet", "outlet", "front", "back"]
-    faces = [f for _, _, f in internal]
-    owner = [o for o, _, _ in internal]
-    neighbour = [n for _, n, _ in internal]
-    starts = {}
-    for name in order:
-        starts[name] = len(faces)
-        for o, f in patches[name]:
-            faces.append(f)
-            owner.append(o)
-    d = os.path.join(case, "constant", "polyMesh")
-    os.makedirs(d, exist_ok=True)
-    _write_list(os.path.join(d, "points"), "vectorField", "points", mb.points,
-                lambda p: f"({p[0]:.15g} {p[1]:.15g} {p[2]:.15g})")
-    _write_list(os.path.join(d, "faces"), "faceList", "faces", faces,
-                lambda f: f"{len(f)}(" + " ".join(map(str, f)) + ")")
-    _write_list(os.path.join(d, "owner"), "labelList", "owner", owner, str)
-    _write_list(os.path.join(d, "neighbour"), "labelList", "neighbour", neighbour, str)
-    types = {"body": "wall", "inlet": "patch", "outlet": "patch", "front": "wedge", "back": "wedge"}
-    with open(os.path.join(d, "boundary"), "w") as out:
-        out.write(HEADER.format(cls="polyBoundaryMesh", obj="boundary"))
-        out.write(f"\n{len(order)}\n(\n")
-        for name in order:
-            out.write(f"    {name}\n    {{\n        type {types[name]};\n"
-                      f"        nFaces {len(patches[name])};\n        startFace {starts[name]};\n    }}\n")
-        out.write(")\n")
+    write_poly_mesh(case, mb.points, internal, patches,
+                    {"body": "wall", "inlet": "patch", "outlet": "patch", "front": "wedge",
+                     "back": "wedge"})
     return mb.ni * mb.nj

@@ -14,11 +14,11 @@ Patches: body (wall), inlet (outer faces whose outward normal points against the
 stream), outlet (the other outer faces), symmetry (symmetryPlane).
 """
 import math
-import os
 
 import numpy as np
 
 import bodyFittedMesh
+from bodyFittedMesh import oriented, polygon
 
 
 def _points(X, R, n_phi):
@@ -39,23 +39,6 @@ def _points(X, R, n_phi):
                 for k in range(n_phi + 1):
                     points.append((X[i, j], R[i, j] * cos_phi[k], R[i, j] * sin_phi[k]))
     return np.array(points), P
-
-
-def _polygon(labels):
-    """The face's labels in order with the repeated ones (the axis) removed."""
-    out = []
-    for p in labels:
-        if p not in out:
-            out.append(int(p))
-    return out
-
-
-def _oriented(points, face, towards):
-    p = points[face]
-    n = np.zeros(3)
-    for k in range(len(face)):
-        n += np.cross(p[k], p[(k + 1) % len(face)])
-    return face if np.dot(n, towards) > 0 else face[::-1]
 
 
 def write_mesh(case, ar, n_eta, n_phi, outer_radius, incidence_deg):
@@ -80,61 +63,33 @@ def write_mesh(case, ar, n_eta, n_phi, outer_radius, incidence_deg):
         for j in range(nj):
             for k in range(nk):
                 own, c0 = cell(i, j, k), centres[i, j, k]
-                xi_face = _polygon([P[i + 1, j, k], P[i + 1, j + 1, k],
+                xi_face = polygon([P[i + 1, j, k], P[i + 1, j + 1, k],
                                     P[i + 1, j + 1, k + 1], P[i + 1, j, k + 1]])
                 if i + 1 < ni:
                     internal.append((own, cell(i + 1, j, k),
-                                     _oriented(points, xi_face, centres[i + 1, j, k] - c0)))
+                                     oriented(points, xi_face, centres[i + 1, j, k] - c0)))
                 else:
-                    f = _oriented(points, xi_face, c0)
+                    f = oriented(points, xi_face, c0)
                     n = np.sum(np.cross(points[f], np.roll(points[f], -1, axis=0)), axis=0)
                     patches["inlet" if np.dot(n, stream) < 0 else "outlet"].append((own, f))
                 if i == 0:
-                    f = _polygon([P[0, j, k], P[0, j + 1, k], P[0, j + 1, k + 1], P[0, j, k + 1]])
-                    patches["body"].append((own, _oriented(points, f, -c0)))
+                    f = polygon([P[0, j, k], P[0, j + 1, k], P[0, j + 1, k + 1], P[0, j, k + 1]])
+                    patches["body"].append((own, oriented(points, f, -c0)))
                 if j + 1 < nj:
-                    f = _polygon([P[i, j + 1, k], P[i + 1, j + 1, k],
+                    f = polygon([P[i, j + 1, k], P[i + 1, j + 1, k],
                                   P[i + 1, j + 1, k + 1], P[i, j + 1, k + 1]])
                     internal.append((own, cell(i, j + 1, k),
-                                     _oriented(points, f, centres[i, j + 1, k] - c0)))
+                                     oriented(points, f, centres[i, j + 1, k] - c0)))
                 if k + 1 < nk:
-                    f = _polygon([P[i, j, k + 1], P[i + 1, j, k + 1],
+                    f = polygon([P[i, j, k + 1], P[i + 1, j, k + 1],
                                   P[i + 1, j + 1, k + 1], P[i, j + 1, k + 1]])
                     internal.append((own, cell(i, j, k + 1),
-                                     _oriented(points, f, centres[i, j, k + 1] - c0)))
+                                     oriented(points, f, centres[i, j, k + 1] - c0)))
                 for kk in {0, nk} & {k, k + 1}:
-                    f = _polygon([P[i, j, kk], P[i + 1, j, kk], P[i + 1, j + 1, kk], P[i, j + 1, kk]])
-                    patches["symmetry"].append((own, _oriented(points, f, [0.0, 0.0, -1.0])))
+                    f = polygon([P[i, j, kk], P[i + 1, j, kk], P[i + 1, j + 1, kk], P[i, j + 1, kk]])
+                    patches["symmetry"].append((own, oriented(points, f, [0.0, 0.0, -1.0])))
     internal.sort(key=lambda t: (t[0], t[1]))
-    _write(case, points, internal, patches)
+    bodyFittedMesh.write_poly_mesh(case, points, internal, patches,
+                                   {"body": "wall", "inlet": "patch", "outlet": "patch",
+                                    "symmetry": "symmetryPlane"})
     return ni * nj * nk
-
-
-def _write(case, points, internal, patches):
-    order = ["body", "inlet", "outlet", "symmetry"]
-    types = {"body": "wall", "inlet": "patch", "outlet": "patch", "symmetry": "symmetryPlane"}
-    faces = [f for _, _, f in internal]
-    owner = [o for o, _, _ in internal]
-    neighbour = [n for _, n, _ in internal]
-    starts = {}
-    for name in order:
-        starts[name] = len(faces)
-        for o, f in patches[name]:
-            faces.append(f)
-            owner.append(o)
-    d = os.path.join(case, "constant", "polyMesh")
-    os.makedirs(d, exist_ok=True)
-    write = bodyFittedMesh._write_list
-    write(os.path.join(d, "points"), "vectorField", "points", points,
-          lambda p: f"({p[0]:.15g} {p[1]:.15g} {p[2]:.15g})")
-    write(os.path.join(d, "faces"), "faceList", "faces", faces,
-          lambda f: f"{len(f)}(" + " ".join(map(str, f)) + ")")
-    write(os.path.join(d, "owner"), "labelList", "owner", owner, str)
-    write(os.path.join(d, "neighbour"), "labelList", "neighbour", neighbour, str)
-    with open(os.path.join(d, "boundary"), "w") as out:
-        out.write(bodyFittedMesh.HEADER.format(cls="polyBoundaryMesh", obj="boundary"))
-        out.write(f"\n{len(order)}\n(\n")
-        for name in order:
-            out.write(f"    {name}\n    {{\n        type {types[name]};\n"
-                      f"        nFaces {len(patches[name])};\n        startFace {starts[name]};\n    }}\n")
-        out.write(")\n")

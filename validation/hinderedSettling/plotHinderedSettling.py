@@ -10,13 +10,21 @@ suspensions) and DIR/results/reference.csv (the single sphere); called by
                          solid fractions of the core runs, 8 cells/D in a 6 D box, null until
                          all three exist), hindrance_error_pct_<run> and hindrance_<run> per run,
                          V_t and Re_t per mesh
+                         max_abs_error_vs_yin_koch_pct (the same against the resolved
+                         simulations of Yin & Koch 2007, the larger of the two readings of
+                         their Reynolds number), hindrance_error_vs_yin_koch_pct_<run>
   results/hindrance.png  the hindrance factor against the solid fraction with Richardson-Zaki
+                         and Yin & Koch
   results/settling.png   the mean settling speed of every run against time
 
 Hindrance factor: the mean settling speed over the bodies and over [AVERAGE_FROM, end], in
 the frame of zero volume flux, divided by the single sphere's terminal velocity V_t on the
 same mesh. Richardson-Zaki: (1 - phi)^n with Rowe's n at Re_t = V_t D/nu of that mesh, phi
 the run's actual solid fraction. Error = measured/predicted - 1.
+
+Yin & Koch (2007): k (1 - phi)^n with their fitted k and n (yinKoch2007.csv) interpolated
+linearly in ln Re to this mesh's Re_t; their Reynolds number is read once on the diameter
+(Re = Re_t) and once on the radius (Re = Re_t/2), since the length they use is not checked.
 """
 import json
 import os
@@ -31,6 +39,29 @@ import hinderedSettling as hs  # noqa: E402
 from validationTools import read_csv  # noqa: E402
 
 CORE = ("phi0.05-c8-L6-s1", "phi0.1-c8-L6-s1", "phi0.2-c8-L6-s1")
+YIN_KOCH = Path(__file__).resolve().parent / "yinKoch2007.csv"
+# their Re against our Re_t = V_t D/nu: read on the diameter, or on the radius
+YIN_KOCH_READINGS = (("diameter", 1.0), ("radius", 0.5))
+
+
+def yin_koch_table():
+    """Yin & Koch's fits: arrays Re, k, n (ascending Re)."""
+    rows = [line.strip().split(",") for line in YIN_KOCH.read_text().splitlines()
+            if line.strip() and not line.startswith("#")]
+    header, data = rows[0], np.array(rows[1:], dtype=float)
+    col = {name: data[:, i] for i, name in enumerate(header)}
+    return col["Re"], col["k"], col["n"]
+
+
+def yin_koch(re):
+    """(k, n) of Yin & Koch at their Reynolds number re, linear in ln Re between their
+    points; ValueError outside their range (no extrapolation)."""
+    res, ks, ns = yin_koch_table()
+    if not res[0] <= re <= res[-1]:
+        raise ValueError(f"{YIN_KOCH}: Re {re:g} is outside the tabulated range "
+                         f"{res[0]:g}-{res[-1]:g}")
+    x = np.log(re)
+    return float(np.interp(x, np.log(res), ks)), float(np.interp(x, np.log(res), ns))
 
 
 def key(name):
@@ -61,6 +92,10 @@ def evaluate(results):
         r.update(V_t=v_t, Re_t=re_t, source=source, n=n, rz=(1 - r["phi"]) ** n,
                  hindrance=r["w"] / v_t, hindrance_se=r["w_se"] / v_t)
         r["error_pct"] = 100 * (r["hindrance"] / r["rz"] - 1)
+        for reading, scale in YIN_KOCH_READINGS:
+            k, n_yk = yin_koch(scale * re_t)
+            r[f"yk_{reading}"] = k * (1 - r["phi"]) ** n_yk
+            r[f"yk_error_pct_{reading}"] = 100 * (r["hindrance"] / r[f"yk_{reading}"] - 1)
     return runs
 
 
@@ -69,17 +104,30 @@ def metrics_of(runs, results):
     for r in runs:
         m[f"hindrance_{key(r['name'])}"] = round(r["hindrance"], 5)
         m[f"hindrance_error_pct_{key(r['name'])}"] = round(r["error_pct"], 3)
+        for reading, _ in YIN_KOCH_READINGS:
+            suffix = "" if reading == "diameter" else "_radius_reading"
+            m[f"hindrance_error_vs_yin_koch_pct_{key(r['name'])}{suffix}"] = round(
+                r[f"yk_error_pct_{reading}"], 3)
     core = [r for r in runs if r["name"] in CORE]
     fit = fitted_k_n(runs)
     if fit:
         m["fitted_prefactor_k"], m["fitted_exponent_n"] = round(fit[0], 4), round(fit[1], 4)
     m["max_abs_hindrance_error_pct"] = (round(max(abs(r["error_pct"]) for r in core), 3)
                                         if len(core) == len(CORE) else None)
+    m["max_abs_error_vs_yin_koch_pct"] = (
+        round(max(abs(r[f"yk_error_pct_{reading}"]) for r in core
+                  for reading, _ in YIN_KOCH_READINGS), 3)
+        if len(core) == len(CORE) else None)
     for cpd in sorted({r["cpd"] for r in runs}):
         v_t, re_t, source = terminal(results, cpd)
         m[f"V_t_c{cpd}"] = round(v_t, 6)
         m[f"Re_t_c{cpd}"] = round(re_t, 4)
         m[f"V_t_c{cpd}_measured"] = source == "measured"
+        for reading, scale in YIN_KOCH_READINGS:
+            suffix = "" if reading == "diameter" else "_radius_reading"
+            k, n_yk = yin_koch(scale * re_t)
+            m[f"yin_koch_k_c{cpd}{suffix}"] = round(k, 4)
+            m[f"yin_koch_n_c{cpd}{suffix}"] = round(n_yk, 4)
     diffs = [abs(float(r["difference_pct"])) for r in read_csv(os.path.join(results, "array.csv"))]
     if diffs:
         m["settling_array_max_abs_difference_pct"] = round(max(diffs), 4)
@@ -128,23 +176,30 @@ def tables(runs, results):
            "and second half of the window (a drift shows there). Flux residue: the largest "
            "mean velocity over the box logged by meanFlow, against -<v_z>.", "",
            "| run | spheres | phi | box | cells/D | window | steps | -<v_z> [V_g] | +- (s.e.) "
-           "| halves | hindrance | Richardson-Zaki | error | rms v_z' / V_t | rms v_x' / V_t | "
+           "| halves | hindrance | Richardson-Zaki | error | Yin & Koch, Re on D / on D/2 | "
+           "error | rms v_z' / V_t | rms v_x' / V_t | "
            "g(1-1.5 D) vertical, horizontal (t = 0) | flux residue | max |F_h|/W | CPU s |",
-           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in runs:
         md.append(f"| {r['name']} | {r['bodies']} | {r['phi']:.4f} | {r['L']} D | {r['cpd']} | "
                   f"{r['average_from']:g}-{r['end_time']:g} | "
                   f"{r['steps']} | {r['w']:.5f} | {r['w_se']:.5f} | {r['w_first_half']:.4f}, "
                   f"{r['w_second_half']:.4f} | {r['hindrance']:.4f} "
                   f"+- {r['hindrance_se']:.4f} | {r['rz']:.4f} | {r['error_pct']:+.2f} % | "
+                  f"{r['yk_diameter']:.4f} / {r['yk_radius']:.4f} | "
+                  f"{r['yk_error_pct_diameter']:+.2f} / {r['yk_error_pct_radius']:+.2f} % | "
                   f"{r['rms_w'] / r['V_t']:.3f} | {r['rms_h'] / r['V_t']:.3f} | "
                   f"{r['g_near_vertical']:.2f}, {r['g_near_horizontal']:.2f} "
                   f"({r['g_near_start']:.2f}) | "
                   f"{r['flux_residue']:.2g} | {r['max_force_over_weight']:.3g} | {r['cpu_s']} |")
     fit = fitted_k_n(runs)
     if fit:
+        re_t = terminal(results, 8)[1]
+        yk = [yin_koch(scale * re_t) for _, scale in YIN_KOCH_READINGS]
         md += ["", f"Fit of the core runs to k (1 - phi)^n: k = {fit[0]:.4f}, n = {fit[1]:.4f} "
-               f"(Rowe's n at Re_t of 8 cells/D: {hs.rowe(runs[0]['Re_t']):.4f})."]
+               f"(Rowe's n at Re_t of 8 cells/D: {hs.rowe(re_t):.4f}; Yin & Koch at that Re_t: "
+               f"k = {yk[0][0]:.4f}, n = {yk[0][1]:.4f} with their Re on D, "
+               f"k = {yk[1][0]:.4f}, n = {yk[1][1]:.4f} on D/2)."]
     return md
 
 
@@ -220,6 +275,10 @@ def figures(runs, results):
     rz = (1 - phi) ** hs.rowe(re_t)
     ax.plot(phi, rz, "k-", label=f"Richardson-Zaki, Rowe's n = {hs.rowe(re_t):.2f}")
     ax.fill_between(phi, 0.9 * rz, 1.1 * rz, color="0.85", label="+-10 %")
+    for (reading, scale), style in zip(YIN_KOCH_READINGS, ("-.", ":")):
+        k, n_yk = yin_koch(scale * re_t)
+        ax.plot(phi, k * (1 - phi) ** n_yk, "b" + style, lw=1.2,
+                label=f"Yin & Koch 2007 (LB), Re on the {reading}: {k:.3f} (1 - phi)^{n_yk:.2f}")
     fit = fitted_k_n(runs)
     if fit:
         ax.plot(phi, fit[0] * (1 - phi) ** fit[1], "k--", lw=1,

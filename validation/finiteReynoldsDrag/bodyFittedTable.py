@@ -77,6 +77,15 @@ def immersed(ar, re, incidence=0.0):
     return None
 
 
+def immersed_series(ar, re, incidence=0.0):
+    """[(cells/D_eq, C_D, |C_L|)] of the immersed runs of one body, Re and incidence,
+    coarsest first."""
+    prefix = (f"sphere-Re{re:g}-c" if ar == 1.0 else f"prolate-Re{re:g}-i{incidence:g}-c")
+    return sorted((int(r["cpd"]), float(r["C_D"]), float(r["C_L"]))
+                  for r in _read(os.path.join(HERE, "results", "runs.csv"))
+                  if r["name"].startswith(prefix) and r["name"][len(prefix):].isdigit())
+
+
 def published(ar, re, incidence=0.0):
     """(name, C_D) of the published reference."""
     if ar == 1.0:
@@ -144,8 +153,8 @@ def _at_incidence(all_series, metrics):
              "| body | Re | incidence | C_D on the meshes (coarse to fine) | last change | order | "
              "body-fitted | immersed, 16 cells/D | immersed - body-fitted | reference | "
              "reference - body-fitted | abs(C_L) on the meshes | order | body-fitted | immersed | "
-             "immersed - body-fitted |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "immersed - body-fitted | Zastawny's lift | Zastawny - body-fitted |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     wedge = {k[:2]: _extrapolated_pair(v)[1] for k, v in all_series.items()
              if k[2] == 0 and len(v) >= 3}
     for (ar, re, inc), rows in sorted(all_series.items()):
@@ -167,6 +176,8 @@ def _at_incidence(all_series, metrics):
         lift = inc not in (0, 90) and ar != 1.0
         if lift:
             metrics[f"body_fitted_{key}_C_L"] = round(cl, 5)
+            z_lift = references.zastawny_lift(re, inc)
+            metrics[f"zastawny_lift_vs_body_fitted_pct_{key}"] = round(_pct(z_lift, cl), 3)
         d_imm = d_lift = float("nan")
         if imm is not None:
             d_imm = _pct(imm[0], cd)
@@ -186,9 +197,35 @@ def _at_incidence(all_series, metrics):
             f"{_pct(ref, cd):+.2f} % | "
             + (f"{' / '.join(f'{r[2]:.4f}' for r in lift_rows)} | {p_lift:.2f} | "
                f"{cl:.4f}{finest_lift} | {'-' if imm is None else f'{imm[1]:.4f}'} | "
-               f"{'-' if imm is None else f'{d_lift:+.2f} %'} |" if lift
-               else "- | - | - | - | - |"))
+               f"{'-' if imm is None else f'{d_lift:+.2f} %'} | "
+               f"{references.zastawny_lift(re, inc):.4f} | "
+               f"{_pct(references.zastawny_lift(re, inc), cl):+.2f} % |" if lift
+               else "- | - | - | - | - | - | - |"))
     return lines
+
+
+def _immersed_resolution(all_series, metrics):
+    """The immersed runs made at more than one resolution against the body-fitted drag."""
+    lines = []
+    for (ar, re, inc), rows in sorted(all_series.items()):
+        runs = immersed_series(ar, re, inc)
+        if len(rows) < 3 or len(runs) < 2:
+            continue
+        cd = _extrapolated_pair(rows)[1]
+        body = "sphere" if ar == 1.0 else f"prolate AR {ar:g}"
+        key = ("sphere" if ar == 1.0 else "prolate") + f"_Re{re:g}_i{inc:g}"
+        errors = [_pct(c, cd) for _, c, _ in runs]
+        for (cpd, _, _), e in zip(runs, errors):
+            metrics[f"immersed_resolution_vs_body_fitted_pct_{key}_c{cpd}"] = round(e, 3)
+        lines.append(f"| {body} | {re:g} | {inc:g} | {cd:.4f} | "
+                     f"{' / '.join(str(r[0]) for r in runs)} | "
+                     f"{' / '.join(f'{r[1]:.4f}' for r in runs)} | "
+                     f"{' / '.join(f'{e:+.2f}' for e in errors)} % |")
+    if not lines:
+        return []
+    return (["## The immersed runs at several resolutions against the body-fitted drag", "",
+             "| body | Re | incidence | body-fitted | cells/D_eq | immersed C_D | "
+             "immersed - body-fitted |", "|---|---|---|---|---|---|---|"] + lines)
 
 
 def _zastawny_readings(all_series, metrics):
@@ -228,6 +265,9 @@ def tables(csv_path):
     lines = _along_axis(all_series, metrics)
     if any(k[2] != 0 for k in all_series):
         lines += [""] + _at_incidence(all_series, metrics)
+    resolution = _immersed_resolution(all_series, metrics)
+    if resolution:
+        lines += [""] + resolution
     zastawny = _zastawny_readings(all_series, metrics)
     if zastawny:
         lines += [""] + zastawny

@@ -54,6 +54,8 @@ def campaign():
              for re in (100, 20) for inc in (0, 45, 90)]
     runs += [(f"prolate-Re100-i45-c{cpd}", dict(ar=2.5, incidence=45, re=100, cpd=cpd))
              for cpd in (8, 12)]
+    runs += [(f"prolate-Re100-i90-c{cpd}", dict(ar=2.5, incidence=90, re=100, cpd=cpd))
+             for cpd in (12, 24)]
     return runs
 
 

@@ -53,22 +53,25 @@ def sphere_tables(rows, metrics):
 
 def spheroid_tables(rows, metrics):
     md = ["", "## Prolate spheroid AR 2.5", "",
-          "Reference: Zastawny et al. (2012) for the drag; for the lift the linear-resistance "
+          "Reference: Zastawny et al. (2012) for the drag and the lift (their lift correlation, "
+          "references.py); for the lift also the linear-resistance "
           "estimate |C_L| = (C_D90 - C_D0) sin(phi) cos(phi) from Zastawny's C_D0 and C_D90 "
           "(exact in Stokes flow, an estimate at finite Re).", "",
-          "| Re | incidence | cells/D | cells | C_D | Zastawny | error | abs(C_L) | estimate | "
-          "ratio | change | CPU [s] |",
-          "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+          "| Re | incidence | cells/D | cells | C_D | Zastawny | error | abs(C_L) | Zastawny | "
+          "error | linear-resistance estimate | ratio | change | CPU [s] |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     worst = None
     for r in sorted((r for r in rows if r["shape"] == "prolate"),
                     key=lambda r: (r["Re"], r["incidence"])):
         re, phi, cd, cl = r["Re"], r["incidence"], r["C_D"], r["C_L"]
         z = ref.zastawny_drag(re, phi)
         lift = ref.linear_resistance_lift(re, phi)
+        z_lift = ref.zastawny_lift(re, phi)
         ratio = f"{cl / lift:.3f}" if lift > 1e-9 else "-"
+        z_lift_error = f"{pct(cl, z_lift):+.2f} %" if z_lift > 1e-9 else "-"
         md.append(f"| {re:g} | {phi} | {r['cpd']} | {r['cells']} | {cd:.4f} | {z:.4f} | "
-                  f"{pct(cd, z):+.2f} % | {cl:.4f} | {lift:.4f} | {ratio} | "
-                  f"{r['C_D_change_pct']:+.4f} % | {r['cpu_s']} |")
+                  f"{pct(cd, z):+.2f} % | {cl:.4f} | {z_lift:.4f} | {z_lift_error} | "
+                  f"{lift:.4f} | {ratio} | {r['C_D_change_pct']:+.4f} % | {r['cpu_s']} |")
         if r["cpd"] == HEADLINE_CPD:
             worst = max(worst or 0.0, abs(pct(cd, z)))
             metrics[f"spheroid_error_pct_Re{re:g}_i{phi}_{HEADLINE_CPD}"] = round(pct(cd, z), 3)
@@ -76,6 +79,8 @@ def spheroid_tables(rows, metrics):
                 metrics[f"spheroid_lift45_Re{re:g}_{HEADLINE_CPD}"] = round(cl, 4)
                 metrics[f"spheroid_lift45_ratio_to_estimate_Re{re:g}_{HEADLINE_CPD}"] = \
                     round(cl / lift, 4)
+                metrics[f"spheroid_lift45_vs_zastawny_pct_Re{re:g}_{HEADLINE_CPD}"] = \
+                    round(pct(cl, z_lift), 3)
     if worst is not None:
         metrics[f"spheroid_max_abs_error_pct_{HEADLINE_CPD}"] = round(worst, 3)
     # the shape of the angle dependence, from the runs alone: C_D(45) against
@@ -107,23 +112,52 @@ def spheroid_tables(rows, metrics):
     metrics["zastawny_minor_diameter_re_over_exact_stokes_90"] = round(m90, 4)
     md += [f"Read with Re on the minor diameter 2b (0.737 Re) it gives {100 * (m0 - 1):+.1f} % "
            f"(along) and {100 * (m90 - 1):+.1f} % (across) there."]
-    series = sorted((r for r in rows if r["shape"] == "prolate" and r["Re"] == 100
-                     and r["incidence"] == 45), key=lambda r: r["cpd"])
-    if len(series) >= 3:
-        cds = ", ".join(f"{r['C_D']:.4f}" for r in series)
-        cls = ", ".join(f"{r['C_L']:.4f}" for r in series)
-        # Richardson extrapolation from the two finest at second order
-        f1, f2 = series[-2], series[-1]
-        q = (f2["cpd"] / f1["cpd"]) ** 2
-        cd_inf = f2["C_D"] + (f2["C_D"] - f1["C_D"]) / (q - 1)
-        cl_inf = f2["C_L"] + (f2["C_L"] - f1["C_L"]) / (q - 1)
-        metrics["spheroid_Re100_i45_richardson_change_pct_16"] = \
-            round(100 * (f2["C_D"] / cd_inf - 1), 3)
-        md += ["", f"Resolution, Re 100 at 45 degrees, {', '.join(str(r['cpd']) for r in series)} "
-               f"cells/D: C_D {cds}; |C_L| {cls}. Extrapolated (second order from the two finest): "
-               f"C_D {cd_inf:.4f} ({100 * (f2['C_D'] / cd_inf - 1):+.2f} % at 16), |C_L| "
-               f"{cl_inf:.4f} ({100 * (f2['C_L'] / cl_inf - 1):+.2f} % at 16)."]
+    for incidence in (45, 90):
+        md += resolution_series(rows, incidence, metrics)
     return md
+
+
+def resolution_series(rows, incidence, metrics):
+    """The prolate spheroid at Re 100 and incidence on three or more meshes: C_D and |C_L|
+    on each and their second-order Richardson extrapolation from the two finest."""
+    series = sorted((r for r in rows if r["shape"] == "prolate" and r["Re"] == 100
+                     and r["incidence"] == incidence), key=lambda r: r["cpd"])
+    if len(series) < 3:
+        return []
+    f1, f2 = series[-2], series[-1]
+    q = (f2["cpd"] / f1["cpd"]) ** 2
+    cd_inf = f2["C_D"] + (f2["C_D"] - f1["C_D"]) / (q - 1)
+    cl_inf = f2["C_L"] + (f2["C_L"] - f1["C_L"]) / (q - 1)
+    # the order observed over the three finest meshes, where their ratios allow it
+    h = [1.0 / r["cpd"] for r in series[-3:]]
+    d1, d2 = series[-2]["C_D"] - series[-3]["C_D"], series[-1]["C_D"] - series[-2]["C_D"]
+    order = "-"
+    if d1 * d2 > 0:
+        from scipy.optimize import brentq
+        ratio = d1 / d2
+
+        def mismatch(p):
+            return (h[0] ** p - h[1] ** p) / (h[1] ** p - h[2] ** p) - ratio
+        try:
+            p = brentq(mismatch, 0.2, 8.0)
+            order = f"{p:.2f}"
+            metrics[f"spheroid_Re100_i{incidence}_observed_order"] = round(p, 2)
+        except ValueError:
+            pass
+    key = f"spheroid_Re100_i{incidence}"
+    metrics[f"{key}_richardson_C_D"] = round(cd_inf, 5)
+    for r in series:
+        metrics[f"{key}_richardson_change_pct_{r['cpd']}"] = round(100 * (r["C_D"] / cd_inf - 1), 3)
+    cds = ", ".join(f"{r['C_D']:.4f}" for r in series)
+    lift = ""
+    if incidence != 90:
+        cls = ", ".join(f"{r['C_L']:.4f}" for r in series)
+        lift = (f"; |C_L| {cls}, extrapolated {cl_inf:.4f} "
+                f"({100 * (f2['C_L'] / cl_inf - 1):+.2f} % at {f2['cpd']})")
+    return ["", f"Resolution, Re 100 at {incidence} degrees, "
+            f"{', '.join(str(r['cpd']) for r in series)} cells/D: C_D {cds}; observed order over "
+            f"the three finest {order}. Extrapolated (second order from the two finest): C_D "
+            f"{cd_inf:.4f} ({100 * (f2['C_D'] / cd_inf - 1):+.2f} % at {f2['cpd']})" + lift + "."]
 
 
 def tables(rows, metrics):

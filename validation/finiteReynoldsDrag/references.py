@@ -36,6 +36,22 @@ def zastawny_drag(re, phi_deg, a=ZASTAWNY_AR25):
     return c0 + (c90 - c0) * math.sin(math.radians(phi_deg)) ** a[0]
 
 
+# Zastawny et al.'s lift for the same ellipsoid: |C_L| = (b1/Re^b2 + b3/Re^b4)
+# sin(phi)^(b5 + b6 Re^b7) cos(phi)^(b8 + b9 Re^b10). The paper could not be read on this
+# machine: b1..b10 as transcribed in the spheroid utilities of a public Basilisk sandbox
+# (myspheroid.h, "Correlations for the drag, lift and pitching torque coefficients of a
+# spheroid"), whose drag coefficients for this shape are ZASTAWNY_AR25 digit for digit,
+# with the same normalisation (pi D_eq^2/4) and Re = U D_eq/nu.
+ZASTAWNY_LIFT_AR25 = (6.079, 0.898, 0.704, -0.028, 1.067, 0.0025, 0.818, 1.049, 0.0, 0.0)
+
+
+def zastawny_lift(re, phi_deg, b=ZASTAWNY_LIFT_AR25):
+    p = math.radians(phi_deg)
+    return ((b[0] / re ** b[1] + b[2] / re ** b[3])
+            * math.sin(p) ** (b[4] + b[5] * re ** b[6])
+            * math.cos(p) ** (b[7] + b[8] * re ** b[9]))
+
+
 def linear_resistance_lift(re, phi_deg):
     """|C_L| = (C_D90 - C_D0) sin(phi) cos(phi) with Zastawny's C_D0 and C_D90: exact
     for Stokes flow (the force is linear in the velocity, so the drag varies as

@@ -108,20 +108,21 @@ REF_FIELDS = ["name", "cpd", "domain_scale", "Re", "C_D", "balance", "cells", "s
 
 def campaign():
     """(name, parameters) of the suspensions: the three solid fractions at 8 cells per D in a
-    6 D box; at the default Galileo number also, at phi 0.1, a second packing, a larger box
-    and 12 cells per D, and one sphere alone in boxes of 4 and 6 D."""
+    6 D box, at phi 0.1 12 cells per D, and one sphere per 4 D box (the free sphere of the
+    held check); at the default Galileo number also, at phi 0.1, a second packing and a
+    larger box, and one sphere per box of 6 D and at 12 cells per D."""
     runs = [(f"phi{phi:g}-c8-L6-s1", dict(phi=phi, cpd=8, L=6, seed=1, end_time=CORE_END_TIME))
             for phi in (0.05, 0.1, 0.2)]
+    single = [(f"single-c{cpd}-L{L}", dict(phi=round(math.pi / (6 * L ** 3), 8), cpd=cpd, L=L,
+                                            seed=1))
+              for cpd, L in ((8, 4), (8, 6), (12, 4))]
+    fine = [("phi0.1-c12-L6-s1", dict(phi=0.1, cpd=12, L=6, seed=1))]
     if GA != DEFAULT_GA:
-        return runs
+        return runs + fine + single[:1]
     runs += [("phi0.1-c8-L6-s2", dict(phi=0.1, cpd=8, L=6, seed=2, end_time=CORE_END_TIME)),
-             ("phi0.1-c8-L8-s1", dict(phi=0.1, cpd=8, L=8, seed=1)),
-             ("phi0.1-c12-L6-s1", dict(phi=0.1, cpd=12, L=6, seed=1))]
+             ("phi0.1-c8-L8-s1", dict(phi=0.1, cpd=8, L=8, seed=1))] + fine
     # one sphere per box (a simple cubic array settling): how much its own images hinder it
-    runs += [(f"single-c{cpd}-L{L}", dict(phi=round(math.pi / (6 * L ** 3), 8), cpd=cpd, L=L,
-                                           seed=1))
-             for cpd, L in ((8, 4), (8, 6), (12, 4))]
-    return runs
+    return runs + single
 
 
 def set_galileo(results, ga):
@@ -498,6 +499,11 @@ def save_history(results, name, history):
 
 
 def do_run(args):
+    names = [name for name, _ in campaign()]
+    unknown = [name for name in args.only if name not in names]
+    if unknown:
+        sys.exit(f"hinderedSettling run --only: no run {', '.join(unknown)} at Ga {GA:g} "
+                 f"(allowed: {', '.join(names)})")
     results = os.path.join(args.out, "results")
     os.makedirs(results, exist_ok=True)
     path = os.path.join(results, "runs.csv")
@@ -604,7 +610,8 @@ def do_held(args):
     results = os.path.join(args.out, "results")
     runs = {r["name"]: r for r in read_csv(os.path.join(results, "runs.csv"))}
     rows = []
-    for free_name in HELD_FREE:
+    in_campaign = {name for name, _ in campaign()}
+    for free_name in (name for name in HELD_FREE if name in in_campaign):
         free = runs.get(free_name)
         if free is None:
             print(f"hinderedSettling held: no row {free_name} in {results}/runs.csv (run "

@@ -114,6 +114,12 @@ def metrics_of(runs, results):
         m["fitted_prefactor_k"], m["fitted_exponent_n"] = round(fit[0], 4), round(fit[1], 4)
     m["max_abs_hindrance_error_pct"] = (round(max(abs(r["error_pct"]) for r in core), 3)
                                         if len(core) == len(CORE) else None)
+    # how far the resolved simulations' fits lie from Richardson-Zaki at the core runs' phi
+    gaps = [100 * (r[f"yk_{reading}"] / r["rz"] - 1) for r in core
+            for reading, _ in YIN_KOCH_READINGS]
+    if len(core) == len(CORE):
+        m["yin_koch_vs_richardson_zaki_pct_min"] = round(min(gaps), 3)
+        m["yin_koch_vs_richardson_zaki_pct_max"] = round(max(gaps), 3)
     m["max_abs_error_vs_yin_koch_pct"] = (
         round(max(abs(r[f"yk_error_pct_{reading}"]) for r in core
                   for reading, _ in YIN_KOCH_READINGS), 3)

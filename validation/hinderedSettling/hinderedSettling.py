@@ -116,7 +116,8 @@ def campaign():
     single = [(f"single-c{cpd}-L{L}", dict(phi=round(math.pi / (6 * L ** 3), 8), cpd=cpd, L=L,
                                             seed=1))
               for cpd, L in ((8, 4), (8, 6), (12, 4))]
-    fine = [("phi0.1-c12-L6-s1", dict(phi=0.1, cpd=12, L=6, seed=1))]
+    # the resolution check over the core runs' window
+    fine = [("phi0.1-c12-L6-s1", dict(phi=0.1, cpd=12, L=6, seed=1, end_time=CORE_END_TIME))]
     if GA != DEFAULT_GA:
         return runs + fine + single[:1]
     runs += [("phi0.1-c8-L6-s2", dict(phi=0.1, cpd=8, L=6, seed=2, end_time=CORE_END_TIME)),

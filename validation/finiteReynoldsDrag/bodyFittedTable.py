@@ -174,9 +174,9 @@ def _at_incidence(all_series, metrics):
             metrics[f"zastawny_vs_body_fitted_pct_{key}"] = round(_pct(ref, cd), 3)
             imm = immersed(ar, re, inc)
         lift = inc not in (0, 90) and ar != 1.0
+        z_lift = references.zastawny_lift(re, inc) if lift else float("nan")
         if lift:
             metrics[f"body_fitted_{key}_C_L"] = round(cl, 5)
-            z_lift = references.zastawny_lift(re, inc)
             metrics[f"zastawny_lift_vs_body_fitted_pct_{key}"] = round(_pct(z_lift, cl), 3)
         d_imm = d_lift = float("nan")
         if imm is not None:
@@ -198,8 +198,7 @@ def _at_incidence(all_series, metrics):
             + (f"{' / '.join(f'{r[2]:.4f}' for r in lift_rows)} | {p_lift:.2f} | "
                f"{cl:.4f}{finest_lift} | {'-' if imm is None else f'{imm[1]:.4f}'} | "
                f"{'-' if imm is None else f'{d_lift:+.2f} %'} | "
-               f"{references.zastawny_lift(re, inc):.4f} | "
-               f"{_pct(references.zastawny_lift(re, inc), cl):+.2f} % |" if lift
+               f"{z_lift:.4f} | {_pct(z_lift, cl):+.2f} % |" if lift
                else "- | - | - | - | - | - | - |"))
     return lines
 

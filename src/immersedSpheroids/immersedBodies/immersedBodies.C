@@ -171,6 +171,9 @@ bool Foam::immersedBodies::readRestartState()
     Pstream::scatter(found);
     if (!found)
     {
+        // every rank names the master's file, the one that is read
+        fileName statePath = objectPath();
+        Pstream::scatter(statePath);
         // a fresh start, unless the run continues from a later time than
         // the first of the case: then the bodies' state is lost
         const scalar t = mesh_.time().value();
@@ -180,7 +183,7 @@ bool Foam::immersedBodies::readRestartState()
             {
                 FatalErrorInFunction
                     << "The run starts at t = " << t << " after the case's"
-                    << " time " << i.name() << ", but " << objectPath()
+                    << " time " << i.name() << ", but " << statePath
                     << " (the bodies' state at the start time, written by"
                     << " this module at every write time) is missing: the"
                     << " bodies would restart from "

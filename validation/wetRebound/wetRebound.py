@@ -69,13 +69,14 @@ CASES = {
     "St742": (742, 788, 920.0, 0.005, 5e-3),
 }
 
-FIELDS = ["name", "St_case", "cpd", "maxOverlap", "saturation", "cells", "dt", "steps", "U_release", "U_in", "U_out", "e",
+FIELDS = ["name", "St_case", "cpd", "maxOverlap", "saturation", "virtualMass", "cells", "dt", "steps", "U_release", "U_in", "U_out", "e",
           "e_spring", "e_after_film", "top_gap_a",
           "St", "e_over_edry", "master", "max_overlap_a", "J_coll", "J_hydro", "J_gravity", "J_hydro_out", "suction", "wall_s", "cpu_s", "host", "date",
           "commit"]
 
 
-def write_case(case, name, cpd, end_factor=1.0, max_overlap=None, saturation=None):
+def write_case(case, name, cpd, end_factor=1.0, max_overlap=None, saturation=None,
+               virtual_mass=None):
     st, re_, rho_f, mu, d = CASES[name]
     a = d / 2
     u = 9 * st * mu / (RHO_P * d)
@@ -115,6 +116,9 @@ def write_case(case, name, cpd, end_factor=1.0, max_overlap=None, saturation=Non
     if saturation is not None:
         substitute_re(p, r"^    restitution     0.97;$",
                       f"    restitution     0.97;\n    saturation      {saturation:g};")
+    if virtual_mass is not None:
+        substitute_re(p, r"^fluidDensity .*$",
+                      f"fluidDensity    {rho_f:g};\nvirtualMass     {virtual_mass:g};")
     return dict(dt=dt, cells=nx * nx * nz, U_release=u, end=end)
 
 
@@ -187,16 +191,18 @@ def measured(r):
                 J_hydro_out=f"{r['J_hydro_out']:.3f}", suction=f"{r['suction']:.3f}")
 
 
-def run_one(name, cpd, force, quick, max_overlap=None, saturation=None):
+def run_one(name, cpd, force, quick, max_overlap=None, saturation=None, virtual_mass=None):
     out_csv = os.path.join(RESULTS, "quick.csv") if quick else RUNS_CSV
     tag = (f"{name}-c{cpd}" + (f"-ov{max_overlap:g}" if max_overlap is not None else "")
-           + (f"-sat{saturation:g}" if saturation is not None else ""))
+           + (f"-sat{saturation:g}" if saturation is not None else "")
+           + (f"-cv{virtual_mass:g}" if virtual_mass is not None else ""))
     rows = read_csv(out_csv)
     if not force and not quick and any(r["name"] == tag for r in rows):
         print(f"{tag}: in {os.path.relpath(out_csv, HERE)}, skipped")
         return
     case = os.path.join(HERE, "run", tag)
-    info = write_case(case, name, cpd, max_overlap=max_overlap, saturation=saturation)
+    info = write_case(case, name, cpd, max_overlap=max_overlap, saturation=saturation,
+                      virtual_mass=virtual_mass)
     print(f"{tag}: {info['cells']} cells, dt {info['dt']:.3g} s, end {info['end']:.3g} s", flush=True)
     start = time.time()
     rc = run_logged(["nice", "-n", "5", "./Allrun"], case, "log.Allrun")
@@ -210,7 +216,8 @@ def run_one(name, cpd, force, quick, max_overlap=None, saturation=None):
     master = math.exp(-35 / r["St"])
     row = dict(name=tag, St_case=CASES[name][0], cpd=cpd,
                maxOverlap=f"{max_overlap if max_overlap is not None else 0.1:g}",
-               saturation=f"{saturation if saturation is not None else 1e-3:g}", cells=info["cells"],
+               saturation=f"{saturation if saturation is not None else 1e-3:g}",
+               virtualMass=f"{virtual_mass if virtual_mass is not None else 0.5:g}", cells=info["cells"],
                dt=f"{info['dt']:.6g}", steps=len(r["t"]) - 1, U_release=f"{info['U_release']:.5g}",
                wall_s=round(wall), cpu_s=round(cpu) if math.isfinite(cpu) else "",
                **provenance(), **measured(r))
@@ -236,9 +243,11 @@ def write_metrics(rows):
     the cases run with the default maxOverlap and saturation at that resolution, and
     cases_<cpd>, how many cases that is (five when the resolution is complete);
     max_abs_deviation_after_film_<cpd>, the same with the rebound speed taken once the
-    sphere has left the film's range."""
+    sphere has left the film's range; virtual_mass_<C_v>_shift_min/_max, the range of the change
+    of e/e_dry over the cases run with another virtualMass against the default 0.5."""
     metrics = {}
-    default = [r for r in rows if r["maxOverlap"] == "0.1" and r["saturation"] == "0.001"]
+    default = [r for r in rows if r["maxOverlap"] == "0.1" and r["saturation"] == "0.001"
+               and r["virtualMass"] == "0.5"]
     for cpd in sorted({int(r["cpd"]) for r in default}):
         sel = [r for r in default if int(r["cpd"]) == cpd]
         metrics[f"max_abs_deviation_{cpd}"] = round(
@@ -247,6 +256,16 @@ def write_metrics(rows):
         if all(r.get("e_after_film") for r in sel):
             metrics[f"max_abs_deviation_after_film_{cpd}"] = round(
                 max(abs(float(r["e_after_film"]) / E_DRY - float(r["master"])) for r in sel), 4)
+    # the stabiliser's sensitivity: the largest shift of e/e_dry over the cases run with another
+    # virtualMass C_v against the default 0.5 (same resolution, maxOverlap and saturation)
+    base = {(r["St_case"], int(r["cpd"])): float(r["e_over_edry"]) for r in default}
+    for cv in sorted({r["virtualMass"] for r in rows} - {"0.5"}, key=float):
+        shifts = [float(r["e_over_edry"]) - base[(r["St_case"], int(r["cpd"]))] for r in rows
+                  if r["virtualMass"] == cv and r["maxOverlap"] == "0.1"
+                  and r["saturation"] == "0.001" and (r["St_case"], int(r["cpd"])) in base]
+        if shifts:
+            metrics[f"virtual_mass_{cv}_shift_min"] = round(min(shifts), 4)
+            metrics[f"virtual_mass_{cv}_shift_max"] = round(max(shifts), 4)
     with open(os.path.join(RESULTS, "metrics.json"), "w") as f:
         json.dump(metrics, f, indent=1, sort_keys=True)
         f.write("\n")
@@ -268,7 +287,7 @@ def film_estimate(st, cpd, saturation):
 
 
 def film_table(rows):
-    """Markdown: the film estimate beside each run of the default maxOverlap."""
+    """Markdown: the film estimate beside each run of the default maxOverlap and virtual mass."""
     lines = ["Quasi-steady Stokes film estimate (`film_estimate`: lubrication losses only, from "
              "the onset gap to the saturation gap, in and out) against the runs and the master "
              "curve:", "",
@@ -276,7 +295,7 @@ def film_table(rows):
              "| exp(-35/St) |",
              "|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        if r["maxOverlap"] != "0.1":
+        if r["maxOverlap"] != "0.1" or r["virtualMass"] != "0.5":
             continue
         est = film_estimate(float(r["St"]), int(r["cpd"]), float(r["saturation"]))
         lines.append(f"| St {r['St_case']} | {r['cpd']} | {r['saturation']} | {float(r['St']):.0f} | "
@@ -292,20 +311,21 @@ def do_plot():
     rows = read_csv(RUNS_CSV)
     if not rows:
         sys.exit("wetRebound: no runs in results/runs.csv")
-    lines = ["| case | cells/d | maxOverlap | saturation | U_in [m/s] | St | e | e/e_dry | exp(-35/St) | error | "
+    lines = ["| case | cells/d | maxOverlap | saturation | C_v | U_in [m/s] | St | e | e/e_dry | exp(-35/St) | error | "
              "e_spring/e_dry | e/e_dry after the film | its error | top gap/a | J_coll | J_hydro | "
              "J_gravity | J_hydro_out | suction | max overlap/a | wall |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         r.setdefault("maxOverlap", "")
+        r["virtualMass"] = r.get("virtualMass") or "0.5"
         r["maxOverlap"] = r["maxOverlap"] or "0.1"
         r["saturation"] = r.get("saturation") or "0.001"
     rows.sort(key=lambda r: (int(r["cpd"]), -float(r["maxOverlap"]), -float(r["saturation"]),
-                             float(r["St_case"])))
+                             float(r["virtualMass"]), float(r["St_case"])))
     for r in rows:
         err = float(r["e_over_edry"]) - float(r["master"])
         lines.append(f"| St {r['St_case']} (Gondret) | {r['cpd']} | {r['maxOverlap']} | "
-                     f"{r['saturation']} | "
+                     f"{r['saturation']} | {r['virtualMass']} | "
                      f"{float(r['U_in']):.3f} | "
                      f"{float(r['St']):.0f} | {float(r['e']):.3f} | {float(r['e_over_edry']):.3f} | "
                      f"{float(r['master']):.3f} | {err:+.3f} | {float(r['e_spring']) / E_DRY:.3f} | "
@@ -327,16 +347,19 @@ def do_plot():
               ("e_after_film", 1 / E_DRY, "after the film (beyond the onset gap)")]
     fig, axes = plt.subplots(1, 3, figsize=(15, 4.4), sharey=True)
     st = np.logspace(0.7, 3.2, 200)
-    series = sorted({(int(r["cpd"]), r["maxOverlap"], r["saturation"]) for r in rows})
-    markers = "osD^vP"
+    series = sorted({(int(r["cpd"]), r["maxOverlap"], r["saturation"], r["virtualMass"])
+                     for r in rows})
+    markers = "osD^vPX*"
     for ax, (key, scale, title) in zip(axes, panels):
         ax.semilogx(st, np.exp(-35 / st), "k-", label="exp(-35/St) (Legendre et al.)")
-        for k, (cpd, ov, sat) in enumerate(series):
+        for k, (cpd, ov, sat, cv) in enumerate(series):
             sel = [r for r in rows
-                   if int(r["cpd"]) == cpd and r["maxOverlap"] == ov and r["saturation"] == sat]
+                   if int(r["cpd"]) == cpd and r["maxOverlap"] == ov and r["saturation"] == sat
+                   and r["virtualMass"] == cv]
             if not all(r.get(key) for r in sel):
                 continue
-            what = f"{cpd} cells/d, maxOverlap {ov}" + (f", saturation {sat}" if sat != "0.001" else "")
+            what = (f"{cpd} cells/d, maxOverlap {ov}" + (f", saturation {sat}" if sat != "0.001" else "")
+                    + (f", C_v {cv}" if cv != "0.5" else ""))
             ax.semilogx([float(r["St"]) for r in sel], [float(r[key]) * scale for r in sel],
                         markers[k % len(markers)], color=f"C{k}", mfc="none" if ov != "0.1" else None,
                         label=what)
@@ -387,6 +410,8 @@ def main():
                    help="collision maxOverlap (default: the library's, 0.1); its own rows")
     r.add_argument("--saturation", type=float, default=None,
                    help="lubrication saturation gap/R (default: the library's, 1e-3); its own rows")
+    r.add_argument("--virtual-mass", type=float, default=None,
+                   help="virtualMass C_v (default: the library's, 0.5); its own rows")
     r.add_argument("--force", action="store_true")
     r.add_argument("--quick", action="store_true")
     sp.add_parser("plot")
@@ -405,11 +430,14 @@ def main():
         sys.exit(f"wetRebound: --max-overlap {args.max_overlap}: allowed (0, 0.5]")
     if args.saturation is not None and not 0 < args.saturation < 0.075:
         sys.exit(f"wetRebound: --saturation {args.saturation}: allowed (0, 0.075)")
+    if args.virtual_mass is not None and not 0 <= args.virtual_mass <= 10:
+        sys.exit(f"wetRebound: --virtual-mass {args.virtual_mass}: allowed [0, 10]")
     if args.quick:
         run_one("St152", 6, True, True)
         return
     for name in (args.case or sorted(CASES, key=lambda n: CASES[n][0])):
-        run_one(name, args.cpd, args.force, False, args.max_overlap, args.saturation)
+        run_one(name, args.cpd, args.force, False, args.max_overlap, args.saturation,
+                args.virtual_mass)
 
 
 if __name__ == "__main__":

@@ -100,8 +100,10 @@ void Foam::bodyIntegrator::checkOverlaps
 }
 
 
-void Foam::bodyIntegrator::setHydrodynamicAccelerations
+void Foam::bodyIntegrator::setVirtualMassAccelerations
 (
+    const coupledBodySet& set,
+    const label i,
     immersedBody& body,
     const collision::BodyState& end,
     const scalar dt,
@@ -117,23 +119,34 @@ void Foam::bodyIntegrator::setHydrodynamicAccelerations
     {
         return;
     }
-    // the step's velocity change without the collision force's and its
+    // the step's velocity change, the collision's included, and its
     // difference as the fluid solve of the next step takes it,
     // (c dU - c00 dU_last)/dt: the virtual-mass term of the next step
-    // (coupledBodySet::advance)
+    // (coupledBodySet::advance); and the collision's part of the change,
+    // the mean collision force on the mass it acted on, m + c m_v
     const bodyState& start = body.state();
-    vector dU = toFoam(end.velocity) - start.velocity;
-    vector dOmega = toFoam(end.angularVelocity) - start.angularVelocity;
+    const vector dU = toFoam(end.velocity) - start.velocity;
+    const vector dOmega =
+        toFoam(end.angularVelocity) - start.angularVelocity;
+    scalar virtualMass = 0;
+    vector virtualInertia = Zero;
+    set.virtualInertia(i, toFoam(end), virtualMass, virtualInertia);
+    vector dUc = Zero;
+    vector dOmegac = Zero;
     if (body.motion().isFreeInTranslation())
     {
-        dU -= FcMean*dt/body.mass();
+        dUc = FcMean*dt/(body.mass() + ddt.c*virtualMass);
     }
     if (body.motion().isFreeInRotation())
     {
-        dOmega -=
+        dOmegac =
             toFoam
             (
-                collision::inverseWorldInertia(end.orientation, toCore(body.bodyInertia()))
+                collision::inverseWorldInertia
+                (
+                    end.orientation,
+                    toCore(body.bodyInertia() + ddt.c*virtualInertia)
+                )
             )
           & TcMean*dt;
     }
@@ -142,7 +155,9 @@ void Foam::bodyIntegrator::setHydrodynamicAccelerations
         (ddt.c*dU - ddt.c00*body.velocityIncrement())/dt,
         (ddt.c*dOmega - ddt.c00*body.angularVelocityIncrement())/dt,
         dU,
-        dOmega
+        dOmega,
+        dUc,
+        dOmegac
     );
 }
 
@@ -195,9 +210,9 @@ void Foam::bodyIntegrator::advance
 
     forAll(bodies, i)
     {
-        setHydrodynamicAccelerations
+        setVirtualMassAccelerations
         (
-            bodies[i], states[i], dt, ddt, FcMean[i], TcMean[i]
+            set, i, bodies[i], states[i], dt, ddt, FcMean[i], TcMean[i]
         );
         bodies[i].state() = toFoam(states[i]);
     }

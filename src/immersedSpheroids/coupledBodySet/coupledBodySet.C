@@ -47,6 +47,25 @@ Foam::coupledBodySet::coupledBodySet
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::coupledBodySet::virtualInertia
+(
+    const label i,
+    const bodyState& state,
+    scalar& mass,
+    vector& inertia
+) const
+{
+    // C_v rho_f V plus the fluid outside the body that the last step's
+    // forcing held to it, with their body-frame moments of inertia
+    const immersedBody& body = bodies_[i];
+    const scalar beta = virtualMass_*fluidDensity_/body.density();
+    const tensor R = state.R();
+    const symmTensor heldBody = symm(R.T() & body.heldInertia() & R);
+    mass = beta*body.mass() + body.heldMass();
+    inertia = beta*body.bodyInertia() + heldBody.diag();
+}
+
+
 Foam::vector Foam::coupledBodySet::externalForce(const label i) const
 {
     const immersedBody& body = bodies_[i];
@@ -88,15 +107,22 @@ collision::CollisionBody Foam::coupledBodySet::collisionBody
     c.filmGap = filmGap_;
     c.cellSize = cellSize_;
     c.externalForce = toCore(externalForce(i));
+    scalar addedMass = 0;
+    vector addedInertia = Zero;
+    virtualInertia(i, toFoam(s), addedMass, addedInertia);
     c.mass =
         body.motion().isFreeInTranslation()
-      ? body.mass()
+      ? body.mass() + ddt_.c*addedMass
       : std::numeric_limits<scalar>::infinity();
     c.inverseInertia.setZero();
     if (body.motion().isFreeInRotation())
     {
         c.inverseInertia =
-            collision::inverseWorldInertia(s.orientation, toCore(body.bodyInertia()));
+            collision::inverseWorldInertia
+            (
+                s.orientation,
+                toCore(body.bodyInertia() + ddt_.c*addedInertia)
+            );
     }
     return c;
 }
@@ -120,37 +146,38 @@ void Foam::coupledBodySet::advance
     const vector Fc = toFoam(fc);
     const vector Tc = toFoam(tc);
 
-    // the virtual mass m_v: C_v rho_f V plus the fluid outside the body that
-    // the last step's forcing held to it (both lagged in the explicit
-    // force), m_v D(U) implicit on the left (c m_v) and lagged on the right,
-    // D the fluid solve's time difference (held over the sub-steps like the
-    // force, so that sub-stepping does not iterate the lag away); the
-    // collision force acts on the body's own mass and inertia
-    const scalar beta = virtualMass_*fluidDensity_/body.density();
+    // m_v D(U) implicit on the left (c m_v) and lagged on the right, D the
+    // fluid solve's time difference of the last step's velocity change
+    // (held over the sub-steps like the force, so that sub-stepping does
+    // not iterate the lag away); the collision force acts on m + c m_v
+    // like every other force (class description)
     const scalar m = body.mass();
-    const scalar virtualMass = beta*m + body.heldMass();
-    const scalar addedMass = ddt_.c*virtualMass;
     const vector J = body.bodyInertia();
     bodyState state = toFoam(s);
-    const tensor R = state.R();
-    const symmTensor heldBody = symm(R.T() & body.heldInertia() & R);
-    const vector virtualInertia = beta*J + heldBody.diag();
+    scalar virtualMass = 0;
+    vector virtualInertia = Zero;
+    this->virtualInertia(i, state, virtualMass, virtualInertia);
+    const scalar addedMass = ddt_.c*virtualMass;
     const vector addedInertia = ddt_.c*virtualInertia;
     const tensor virtualWorld =
         toFoam(collision::worldInertia(s.orientation, toCore(virtualInertia)));
-    const tensor addedWorld = ddt_.c*virtualWorld;
-    const tensor JinvWorld =
-        toFoam(collision::inverseWorldInertia(s.orientation, toCore(J)));
 
-    vector impulse = (externalForce(i) + (1 + addedMass/m)*Fc)*dt;
-    vector angularImpulse =
-        (body.hydroTorque() + Tc + (addedWorld & (JinvWorld & Tc)))*dt;
+    vector impulse = (externalForce(i) + Fc)*dt;
+    vector angularImpulse = (body.hydroTorque() + Tc)*dt;
     vector lagged = body.acceleration();
     vector angularLagged = body.angularAcceleration();
     if (ddt_.c00 != 0)
     {
-        lagged += ddt_.c00*body.velocityIncrement()/fluidDeltaT_;
-        angularLagged += ddt_.c00*body.angularVelocityIncrement()/fluidDeltaT_;
+        lagged +=
+            ddt_.c00
+           *(body.velocityIncrement() - body.collisionVelocityIncrement())
+           /fluidDeltaT_;
+        angularLagged +=
+            ddt_.c00
+           *(
+                body.angularVelocityIncrement()
+              - body.collisionAngularVelocityIncrement()
+            )/fluidDeltaT_;
     }
     impulse += virtualMass*lagged*dt;
     angularImpulse += dt*(virtualWorld & angularLagged);

@@ -31,7 +31,8 @@ Description
     7. the virtual-mass stabilisation of a light body in a model fluid
        whose lagged reaction is the added-mass force under the solve's own
        time difference (Euler, backward): the added-mass acceleration
-       without alternation (virtualMassTests.C).
+       without alternation, and a contact in that fluid moving the body as
+       the same contact in vacuum (virtualMassTests.C).
 
 Usage
     Test-immersedBodies -case CASE -volumeMeshes '(vol16 vol32 vol64)'

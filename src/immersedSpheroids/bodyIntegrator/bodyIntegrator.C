@@ -102,17 +102,12 @@ void Foam::bodyIntegrator::checkOverlaps
 
 void Foam::bodyIntegrator::setVirtualMassAccelerations
 (
-    const coupledBodySet& set,
-    const label i,
     immersedBody& body,
     const collision::BodyState& end,
     const scalar dt,
-    const immersedSpheroids::ddtCoefficients& ddt,
-    const vector& FcMean,
-    const vector& TcMean
+    const immersedSpheroids::ddtCoefficients& ddt
 )
 {
-    using immersedSpheroids::toCore;
     using immersedSpheroids::toFoam;
 
     if (!body.motion().moves())
@@ -122,42 +117,17 @@ void Foam::bodyIntegrator::setVirtualMassAccelerations
     // the step's velocity change, the collision's included, and its
     // difference as the fluid solve of the next step takes it,
     // (c dU - c00 dU_last)/dt: the virtual-mass term of the next step
-    // (coupledBodySet::advance); and the collision's part of the change,
-    // the mean collision force on the mass it acted on, m + c m_v
+    // (coupledBodySet::advance)
     const bodyState& start = body.state();
     const vector dU = toFoam(end.velocity) - start.velocity;
     const vector dOmega =
         toFoam(end.angularVelocity) - start.angularVelocity;
-    scalar virtualMass = 0;
-    vector virtualInertia = Zero;
-    set.virtualInertia(i, toFoam(end), virtualMass, virtualInertia);
-    vector dUc = Zero;
-    vector dOmegac = Zero;
-    if (body.motion().isFreeInTranslation())
-    {
-        dUc = FcMean*dt/(body.mass() + ddt.c*virtualMass);
-    }
-    if (body.motion().isFreeInRotation())
-    {
-        dOmegac =
-            toFoam
-            (
-                collision::inverseWorldInertia
-                (
-                    end.orientation,
-                    toCore(body.bodyInertia() + ddt.c*virtualInertia)
-                )
-            )
-          & TcMean*dt;
-    }
     body.setAccelerations
     (
         (ddt.c*dU - ddt.c00*body.velocityIncrement())/dt,
         (ddt.c*dOmega - ddt.c00*body.angularVelocityIncrement())/dt,
         dU,
-        dOmega,
-        dUc,
-        dOmegac
+        dOmega
     );
 }
 
@@ -210,10 +180,7 @@ void Foam::bodyIntegrator::advance
 
     forAll(bodies, i)
     {
-        setVirtualMassAccelerations
-        (
-            set, i, bodies[i], states[i], dt, ddt, FcMean[i], TcMean[i]
-        );
+        setVirtualMassAccelerations(bodies[i], states[i], dt, ddt);
         bodies[i].state() = toFoam(states[i]);
     }
     if (colliding)

@@ -107,12 +107,12 @@ collision::CollisionBody Foam::coupledBodySet::collisionBody
     c.filmGap = filmGap_;
     c.cellSize = cellSize_;
     c.externalForce = toCore(externalForce(i));
-    scalar addedMass = 0;
-    vector addedInertia = Zero;
-    virtualInertia(i, toFoam(s), addedMass, addedInertia);
+    scalar virtualMass = 0;
+    vector virtualMoments = Zero;
+    virtualInertia(i, toFoam(s), virtualMass, virtualMoments);
     c.mass =
         body.motion().isFreeInTranslation()
-      ? body.mass() + ddt_.c*addedMass
+      ? body.mass() + virtualMass
       : std::numeric_limits<scalar>::infinity();
     c.inverseInertia.setZero();
     if (body.motion().isFreeInRotation())
@@ -121,7 +121,7 @@ collision::CollisionBody Foam::coupledBodySet::collisionBody
             collision::inverseWorldInertia
             (
                 s.orientation,
-                toCore(body.bodyInertia() + ddt_.c*addedInertia)
+                toCore(body.bodyInertia() + virtualMoments)
             );
     }
     return c;
@@ -168,16 +168,8 @@ void Foam::coupledBodySet::advance
     vector angularLagged = body.angularAcceleration();
     if (ddt_.c00 != 0)
     {
-        lagged +=
-            ddt_.c00
-           *(body.velocityIncrement() - body.collisionVelocityIncrement())
-           /fluidDeltaT_;
-        angularLagged +=
-            ddt_.c00
-           *(
-                body.angularVelocityIncrement()
-              - body.collisionAngularVelocityIncrement()
-            )/fluidDeltaT_;
+        lagged += ddt_.c00*body.velocityIncrement()/fluidDeltaT_;
+        angularLagged += ddt_.c00*body.angularVelocityIncrement()/fluidDeltaT_;
     }
     impulse += virtualMass*lagged*dt;
     angularImpulse += dt*(virtualWorld & angularLagged);

@@ -373,12 +373,6 @@ void Foam::immersedBody::writeState(Ostream& os) const
     os.writeEntry("angularAcceleration", angularAcceleration_);
     os.writeEntry("velocityIncrement", velocityIncrement_);
     os.writeEntry("angularVelocityIncrement", angularVelocityIncrement_);
-    os.writeEntry("collisionVelocityIncrement", collisionVelocityIncrement_);
-    os.writeEntry
-    (
-        "collisionAngularVelocityIncrement",
-        collisionAngularVelocityIncrement_
-    );
     os.writeEntry("unwrapShift", unwrapShift_);
 }
 
@@ -416,14 +410,6 @@ void Foam::immersedBody::readState(const dictionary& dict)
         readCheckedOrDefault<vector>(dict, "velocityIncrement", Zero, vec);
     angularVelocityIncrement_ =
         readCheckedOrDefault<vector>(dict, "angularVelocityIncrement", Zero, vec);
-    collisionVelocityIncrement_ = readCheckedOrDefault<vector>
-    (
-        dict, "collisionVelocityIncrement", Zero, vec
-    );
-    collisionAngularVelocityIncrement_ = readCheckedOrDefault<vector>
-    (
-        dict, "collisionAngularVelocityIncrement", Zero, vec
-    );
     unwrapShift_ = readCheckedOrDefault<vector>
     (
         dict, "unwrapShift", Zero,

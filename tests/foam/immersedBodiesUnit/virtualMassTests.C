@@ -25,8 +25,7 @@ Description
     to round-off (a contact on the body's own mass alone does not give
     it). Backward: inside a step the contact meets m + (3/2) m_v and the
     next step returns (1/2) m_v of the change, an O(dt/T_c) departure from
-    the vacuum contact (0.013 U_in at 10 steps per contact, half that at
-    20), checked within 0.02 U_in. Both: the sphere pressed on the anvil
+    the vacuum contact (printed), checked within 0.02 U_in. Both: the sphere pressed on the anvil
     by a constant load comes to rest with the collision force carrying the
     load to 1e-6.
     Constant/g (zero) is written for the test and removed after it.

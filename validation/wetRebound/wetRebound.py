@@ -157,7 +157,10 @@ def analyse(h5, name):
     left = i0 + (inContact[-1] + 1 if len(inContact) else 0)
     free = left + np.flatnonzero(fc[left:] == 0)
     u_after_film = max(w[free[0]:].max(), 0.0) if len(free) else 0.0
-    top_gap = gap[i0:].max()
+    # the rebound's height: the largest gap once the sphere moves away from the wall
+    # (after its deepest point), not the gap of the approach at the first collision force
+    deepest = i0 + int(np.argmin(gap[i0:]))
+    top_gap = gap[deepest:].max()
     # impulses over the steps with a collision force, over m U_in (the forces
     # of row k act over the step that ends at row k; fixed step)
     i1 = touched[-1]

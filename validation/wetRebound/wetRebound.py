@@ -12,7 +12,7 @@ run:  each case in run/<name>/ (git-ignored), serial, nice; the body time series
       runs are skipped unless --force. --quick: the St 152 case at 6 cells/d to the
       rebound (about a minute; results/quick.csv).
 plot: results/table.md (with the quasi-steady Stokes film estimate of each run), metrics.json,
-      results/restitution.png, results/trajectories.png.
+      results/restitution.png, results/sameGap.png, results/trajectories.png.
 collect: recompute the measured columns of results/runs.csv from results/<name>.h5
       (after a change of the analysis; the run columns are kept).
 
@@ -69,14 +69,16 @@ CASES = {
     "St742": (742, 788, 920.0, 0.005, 5e-3),
 }
 
-FIELDS = ["name", "St_case", "cpd", "maxOverlap", "saturation", "virtualMass", "cells", "dt", "steps", "U_release", "U_in", "U_out", "e",
+FIELDS = ["name", "St_case", "cpd", "maxOverlap", "saturation", "virtualMass", "startShift", "cells", "dt", "steps", "U_release", "U_in", "U_out", "e",
           "e_spring", "e_after_film", "top_gap_a",
           "St", "e_over_edry", "master", "max_overlap_a", "J_coll", "J_hydro", "J_gravity", "J_hydro_out", "suction", "wall_s", "cpu_s", "host", "date",
           "commit"]
 
 
 def write_case(case, name, cpd, end_factor=1.0, max_overlap=None, saturation=None,
-               virtual_mass=None):
+               virtual_mass=None, start_shift=None):
+    """The case of run `name`; start_shift: the release gap raised by that many cells (the
+    sphere's position against the cells when it reaches the wall)."""
     st, re_, rho_f, mu, d = CASES[name]
     a = d / 2
     u = 9 * st * mu / (RHO_P * d)
@@ -86,7 +88,8 @@ def write_case(case, name, cpd, end_factor=1.0, max_overlap=None, saturation=Non
     nx, nz = round(4 * cpd), round(5 * cpd)
     # approach 2d, contact, and the rebound to its largest speed (the viscous
     # cases decelerate within a fraction of d; 1.2 d at St 742)
-    end = end_factor * (2.0 * d / u + 40 * dt + (0.6 + 0.6 * (st > 500)) * d / u)
+    shift = (start_shift or 0.0) * h
+    end = end_factor * ((2.0 * d + shift) / u + 40 * dt + (0.6 + 0.6 * (st > 500)) * d / u)
     shutil.rmtree(case, ignore_errors=True)
     shutil.copytree(os.path.join(HERE, "caseTemplate"), case)
     mm = 1e3
@@ -108,7 +111,7 @@ def write_case(case, name, cpd, end_factor=1.0, max_overlap=None, saturation=Non
     p = f"{case}/constant/immersedBodiesProperties"
     substitute_re(p, r"^fluidDensity .*$", f"fluidDensity    {rho_f:g};")
     substitute_re(p, r"semiAxes .*$", f"semiAxes        ({a:g} {a:g} {a:g});")
-    substitute_re(p, r"centre .*$", f"centre          ({lx / 2:g} {lx / 2:g} {a + 2 * d:g});")
+    substitute_re(p, r"centre .*$", f"centre          ({lx / 2:g} {lx / 2:g} {a + 2 * d + shift:.9g});")
     substitute_re(p, r"velocity .*$", f"velocity        (0 0 {-u:.6g});")
     if max_overlap is not None:
         substitute_re(p, r"^    restitution     0.97;$",
@@ -183,6 +186,64 @@ def analyse(h5, name):
                 suction=suction)
 
 
+# gaps over the radius at which the rebound speed is also compared with the approach speed at
+# the same gap (same_gap_restitution)
+SAME_GAPS = (0.05, 0.1, 0.2, 0.3, 0.5)
+
+
+def same_gap_restitution(h5, name, gaps=SAME_GAPS):
+    """e(h)/e_dry = U_out(h)/(e_dry U_in(h)): the speed at which the sphere first passes the gap
+    h on the way out over its speed at the same gap on the way in, both interpolated linearly
+    between the samples (zero where the rebound does not reach h). The ratio of speeds at one
+    position is what a velocity measured at a given distance from the wall compares; it
+    includes the film's loss on both sides of the contact down to that gap."""
+    import h5py
+    a = CASES[name][4] / 2
+    with h5py.File(h5, "r", locking=False) as f:
+        gap = f["centre"][:, 0, 2] / a - 1.0
+        w = f["velocity"][:, 0, 2]
+    deepest = int(np.argmin(gap))
+    gap_in, w_in = gap[:deepest][::-1], w[:deepest][::-1]
+    top = deepest + int(np.argmax(gap[deepest:]))
+    gap_out, w_out = gap[deepest:top + 1], w[deepest:top + 1]
+    values = []
+    for h in gaps:
+        u_in = -np.interp(h, gap_in, w_in)
+        if gap_out[-1] < h:
+            values.append(0.0)
+            continue
+        j = int(np.flatnonzero(gap_out >= h)[0])
+        u_out = np.interp(h, gap_out[j - 1:j + 1], w_out[j - 1:j + 1])
+        values.append(u_out / u_in / E_DRY)
+    return values
+
+
+def same_gap_rows(rows):
+    """{cpd: [(row, [e(h)/e_dry for SAME_GAPS])]} for the default-setting runs."""
+    out = {}
+    for r in rows:
+        if (r["maxOverlap"], r["saturation"], r["virtualMass"], r["startShift"]) != ("0.1", "0.001", "0.5", "0"):
+            continue
+        name = r["name"].split("-c")[0]
+        h5 = os.path.join(RESULTS, f"{r['name']}.h5")
+        out.setdefault(int(r["cpd"]), []).append((r, same_gap_restitution(h5, name)))
+    return out
+
+
+def same_gap_table(rows):
+    """Markdown: e(h)/e_dry - exp(-35/St) at the gaps SAME_GAPS, default settings."""
+    lines = ["Rebound speed over approach speed at the same gap h (`same_gap_restitution`), "
+             "e(h)/e_dry - exp(-35/St), default settings:", "",
+             "| case | cells/d | St | exp(-35/St) | " + " | ".join(f"h = {h:g} a" for h in SAME_GAPS) + " |",
+             "|---|---|---|---|" + "---|" * len(SAME_GAPS)]
+    for cpd, sel in sorted(same_gap_rows(rows).items()):
+        for r, values in sel:
+            master = float(r["master"])
+            lines.append(f"| St {r['St_case']} | {cpd} | {float(r['St']):.0f} | {master:.3f} | "
+                         + " | ".join(f"{v:.3f} ({v - master:+.3f})" for v in values) + " |")
+    return lines
+
+
 def measured(r):
     """The measured columns of runs.csv from analyse()."""
     return dict(U_in=f"{r['U_in']:.5g}", U_out=f"{r['U_out']:.5g}", e=f"{r['e']:.4f}",
@@ -194,18 +255,20 @@ def measured(r):
                 J_hydro_out=f"{r['J_hydro_out']:.3f}", suction=f"{r['suction']:.3f}")
 
 
-def run_one(name, cpd, force, quick, max_overlap=None, saturation=None, virtual_mass=None):
+def run_one(name, cpd, force, quick, max_overlap=None, saturation=None, virtual_mass=None,
+            start_shift=None):
     out_csv = os.path.join(RESULTS, "quick.csv") if quick else RUNS_CSV
     tag = (f"{name}-c{cpd}" + (f"-ov{max_overlap:g}" if max_overlap is not None else "")
            + (f"-sat{saturation:g}" if saturation is not None else "")
-           + (f"-cv{virtual_mass:g}" if virtual_mass is not None else ""))
+           + (f"-cv{virtual_mass:g}" if virtual_mass is not None else "")
+           + (f"-sh{start_shift:g}" if start_shift is not None else ""))
     rows = read_csv(out_csv)
     if not force and not quick and any(r["name"] == tag for r in rows):
         print(f"{tag}: in {os.path.relpath(out_csv, HERE)}, skipped")
         return
     case = os.path.join(HERE, "run", tag)
     info = write_case(case, name, cpd, max_overlap=max_overlap, saturation=saturation,
-                      virtual_mass=virtual_mass)
+                      virtual_mass=virtual_mass, start_shift=start_shift)
     print(f"{tag}: {info['cells']} cells, dt {info['dt']:.3g} s, end {info['end']:.3g} s", flush=True)
     start = time.time()
     rc = run_logged(["nice", "-n", "5", "./Allrun"], case, "log.Allrun")
@@ -220,7 +283,8 @@ def run_one(name, cpd, force, quick, max_overlap=None, saturation=None, virtual_
     row = dict(name=tag, St_case=CASES[name][0], cpd=cpd,
                maxOverlap=f"{max_overlap if max_overlap is not None else 0.1:g}",
                saturation=f"{saturation if saturation is not None else 1e-3:g}",
-               virtualMass=f"{virtual_mass if virtual_mass is not None else 0.5:g}", cells=info["cells"],
+               virtualMass=f"{virtual_mass if virtual_mass is not None else 0.5:g}",
+               startShift=f"{start_shift or 0:g}", cells=info["cells"],
                dt=f"{info['dt']:.6g}", steps=len(r["t"]) - 1, U_release=f"{info['U_release']:.5g}",
                wall_s=round(wall), cpu_s=round(cpu) if math.isfinite(cpu) else "",
                **provenance(), **measured(r))
@@ -247,10 +311,13 @@ def write_metrics(rows):
     cases_<cpd>, how many cases that is (five when the resolution is complete);
     max_abs_deviation_after_film_<cpd>, the same with the rebound speed taken once the
     sphere has left the film's range; virtual_mass_<C_v>_shift_min/_max, the range of the change
-    of e/e_dry over the cases run with another virtualMass against the default 0.5."""
+    of e/e_dry over the cases run with another virtualMass against the default 0.5;
+    start_shift_spread_<cpd> and start_shift_spread_after_film_<cpd>, the largest range of
+    e/e_dry (and of the same after the film) over the release positions a case was run
+    from (start_table). Rows with a start shift count only there."""
     metrics = {}
     default = [r for r in rows if r["maxOverlap"] == "0.1" and r["saturation"] == "0.001"
-               and r["virtualMass"] == "0.5"]
+               and r["virtualMass"] == "0.5" and r["startShift"] == "0"]
     for cpd in sorted({int(r["cpd"]) for r in default}):
         sel = [r for r in default if int(r["cpd"]) == cpd]
         metrics[f"max_abs_deviation_{cpd}"] = round(
@@ -264,15 +331,73 @@ def write_metrics(rows):
     base = {(r["St_case"], int(r["cpd"])): float(r["e_over_edry"]) for r in default}
     for cv in sorted({r["virtualMass"] for r in rows} - {"0.5"}, key=float):
         shifts = [float(r["e_over_edry"]) - base[(r["St_case"], int(r["cpd"]))] for r in rows
-                  if r["virtualMass"] == cv and r["maxOverlap"] == "0.1"
+                  if r["virtualMass"] == cv and r["maxOverlap"] == "0.1" and r["startShift"] == "0"
                   and r["saturation"] == "0.001" and (r["St_case"], int(r["cpd"])) in base]
         if shifts:
             metrics[f"virtual_mass_{cv}_shift_min"] = round(min(shifts), 4)
             metrics[f"virtual_mass_{cv}_shift_max"] = round(max(shifts), 4)
+    for (cpd, key), spread in start_spreads(rows).items():
+        metrics[f"start_shift_spread{key}_{cpd}"] = round(spread, 4)
+    for cpd, sel in same_gap_rows(rows).items():
+        for k, h in enumerate(SAME_GAPS):
+            metrics[f"max_abs_deviation_same_gap_{h:g}_{cpd}"] = round(
+                max(abs(values[k] - float(r["master"])) for r, values in sel), 4)
     with open(os.path.join(RESULTS, "metrics.json"), "w") as f:
         json.dump(metrics, f, indent=1, sort_keys=True)
         f.write("\n")
     print("wetRebound: results/metrics.json", metrics)
+
+
+def start_groups(rows):
+    """{(St_case, cpd): rows}: the default-setting runs of a case released from more than one
+    position (start shifts of a fraction of a cell)."""
+    groups = {}
+    for r in rows:
+        if r["maxOverlap"] == "0.1" and r["saturation"] == "0.001" and r["virtualMass"] == "0.5":
+            groups.setdefault((r["St_case"], int(r["cpd"])), []).append(r)
+    return {k: sorted(v, key=lambda r: float(r["startShift"])) for k, v in groups.items()
+            if len(v) > 1}
+
+
+def start_spreads(rows):
+    """{(cpd, "", "_after_film" or "_same_gap_<h>"): the largest range of e/e_dry (at
+    separation, after the film, at the same gap h in and out) over the release positions of a
+    case at that resolution}."""
+    spreads = {}
+    for (st, cpd), sel in start_groups(rows).items():
+        same = [same_gap_restitution(os.path.join(RESULTS, f"{r['name']}.h5"), r["name"].split("-c")[0])
+                for r in sel]
+        for key, values in ([("", [float(r["e_over_edry"]) for r in sel]),
+                             ("_after_film", [float(r["e_after_film"]) / E_DRY for r in sel])]
+                            + [(f"_same_gap_{h:g}", list(v)) for h, v in zip(SAME_GAPS, zip(*same))]):
+            spreads[(cpd, key)] = max(spreads.get((cpd, key), 0.0), max(values) - min(values))
+    return spreads
+
+
+def start_table(rows):
+    """Markdown: e/e_dry, the same after the film and the top gap of each case released from
+    several positions (the release gap raised by a fraction of a cell), with their ranges."""
+    groups = start_groups(rows)
+    if not groups:
+        return []
+    lines = ["Release position: the same case released a fraction of a cell higher (`--start-shift`), "
+             "so that the sphere meets the wall at another position against the cells and the "
+             "steps; the default settings otherwise:", "",
+             "| case | cells/d | start shift [cells] | St | e/e_dry | e/e_dry after the film | top gap/a | "
+             + " | ".join(f"e({h:g} a)/e_dry" for h in SAME_GAPS) + " |",
+             "|---|---|---|---|---|---|---|" + "---|" * len(SAME_GAPS)]
+    for (st, cpd), sel in sorted(groups.items(), key=lambda kv: (kv[0][1], float(kv[0][0]))):
+        same = [same_gap_restitution(os.path.join(RESULTS, f"{r['name']}.h5"), r["name"].split("-c")[0])
+                for r in sel]
+        for r, values in zip(sel, same):
+            lines.append(f"| St {st} | {cpd} | {r['startShift']} | {float(r['St']):.1f} | "
+                         f"{float(r['e_over_edry']):.3f} | {float(r['e_after_film']) / E_DRY:.3f} | "
+                         f"{float(r['top_gap_a']):.3f} | " + " | ".join(f"{v:.3f}" for v in values) + " |")
+        columns = [[float(r["e_over_edry"]) for r in sel], [float(r["e_after_film"]) / E_DRY for r in sel],
+                   [float(r["top_gap_a"]) for r in sel]] + [list(v) for v in zip(*same)]
+        lines.append(f"| St {st} | {cpd} | range | | "
+                     + " | ".join(f"{max(c) - min(c):.3f}" for c in columns) + " |")
+    return lines
 
 
 def film_estimate(st, cpd, saturation):
@@ -298,7 +423,7 @@ def film_table(rows):
              "| exp(-35/St) |",
              "|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        if r["maxOverlap"] != "0.1" or r["virtualMass"] != "0.5":
+        if r["maxOverlap"] != "0.1" or r["virtualMass"] != "0.5" or r["startShift"] != "0":
             continue
         est = film_estimate(float(r["St"]), int(r["cpd"]), float(r["saturation"]))
         lines.append(f"| St {r['St_case']} | {r['cpd']} | {r['saturation']} | {float(r['St']):.0f} | "
@@ -323,9 +448,12 @@ def do_plot():
         r["virtualMass"] = r.get("virtualMass") or "0.5"
         r["maxOverlap"] = r["maxOverlap"] or "0.1"
         r["saturation"] = r.get("saturation") or "0.001"
+        r["startShift"] = r.get("startShift") or "0"
     rows.sort(key=lambda r: (int(r["cpd"]), -float(r["maxOverlap"]), -float(r["saturation"]),
                              float(r["virtualMass"]), float(r["St_case"])))
     for r in rows:
+        if r["startShift"] != "0":
+            continue
         err = float(r["e_over_edry"]) - float(r["master"])
         lines.append(f"| St {r['St_case']} (Gondret) | {r['cpd']} | {r['maxOverlap']} | "
                      f"{r['saturation']} | {r['virtualMass']} | "
@@ -338,6 +466,9 @@ def do_plot():
                      f"{float(r['max_overlap_a']):.3f} | "
                      f"{r['wall_s']} s |")
     lines += [""] + film_table(rows)
+    lines += [""] + same_gap_table(rows)
+    start = start_table(rows)
+    lines += [""] + start if start else []
     with open(os.path.join(RESULTS, "table.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
@@ -358,7 +489,7 @@ def do_plot():
         for k, (cpd, ov, sat, cv) in enumerate(series):
             sel = [r for r in rows
                    if int(r["cpd"]) == cpd and r["maxOverlap"] == ov and r["saturation"] == sat
-                   and r["virtualMass"] == cv]
+                   and r["virtualMass"] == cv and r["startShift"] == "0"]
             if not all(r.get(key) for r in sel):
                 continue
             what = (f"{cpd} cells/d, maxOverlap {ov}" + (f", saturation {sat}" if sat != "0.001" else "")
@@ -376,8 +507,30 @@ def do_plot():
     fig.tight_layout()
     fig.savefig(os.path.join(RESULTS, "restitution.png"), dpi=120, bbox_inches="tight")
 
+    # the rebound speed over the approach speed at the same gap, against the gap
+    groups = same_gap_rows(rows)
+    fig, axes = plt.subplots(1, len(groups), figsize=(4.6 * len(groups), 4), sharey=True,
+                             squeeze=False)
+    for ax, (cpd, sel) in zip(axes[0], sorted(groups.items())):
+        for k, (r, values) in enumerate(sorted(sel, key=lambda x: float(x[0]["St"]))):
+            ax.plot(SAME_GAPS, [v - float(r["master"]) for v in values], "o-", color=f"C{k}",
+                    label=f"St {float(r['St']):.0f}")
+        ax.axhspan(-0.05, 0.05, color="0.85", zorder=0)
+        ax.axhline(0, color="k", lw=0.5)
+        ax.set_xscale("log")
+        ax.set_xlabel("gap h / a where both speeds are taken")
+        ax.set_title(f"{cpd} cells/d", fontsize=10)
+        ax.grid(True, which="both", alpha=0.3)
+    axes[0][0].set_ylabel("e(h)/e_dry - exp(-35/St)")
+    axes[0][-1].legend(fontsize=8)
+    fig.suptitle("Rebound over approach speed at the same gap (grey: the target band 0.05)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(RESULTS, "sameGap.png"), dpi=120)
+
     fig, ax = plt.subplots(figsize=(6, 4))
     for r in sorted(rows, key=lambda r: float(r["St_case"])):
+        if r["startShift"] != "0":
+            continue
         h5 = os.path.join(RESULTS, f"{r['name']}.h5")
         if not os.path.exists(h5):
             continue
@@ -415,6 +568,8 @@ def main():
                    help="lubrication saturation gap/R (default: the library's, 1e-3); its own rows")
     r.add_argument("--virtual-mass", type=float, default=None,
                    help="virtualMass C_v (default: the library's, 0.5); its own rows")
+    r.add_argument("--start-shift", type=float, default=None,
+                   help="release gap raised by this many cells, [0, 1); its own rows")
     r.add_argument("--force", action="store_true")
     r.add_argument("--quick", action="store_true")
     sp.add_parser("plot")
@@ -435,12 +590,14 @@ def main():
         sys.exit(f"wetRebound: --saturation {args.saturation}: allowed (0, 0.075)")
     if args.virtual_mass is not None and not 0 <= args.virtual_mass <= 10:
         sys.exit(f"wetRebound: --virtual-mass {args.virtual_mass}: allowed [0, 10]")
+    if args.start_shift is not None and not 0 <= args.start_shift < 1:
+        sys.exit(f"wetRebound: --start-shift {args.start_shift}: allowed [0, 1) cells")
     if args.quick:
         run_one("St152", 6, True, True)
         return
     for name in (args.case or sorted(CASES, key=lambda n: CASES[n][0])):
         run_one(name, args.cpd, args.force, False, args.max_overlap, args.saturation,
-                args.virtual_mass)
+                args.virtual_mass, args.start_shift)
 
 
 if __name__ == "__main__":

@@ -16,11 +16,14 @@ The cases, each the set-up of an existing test or validation, run in run/<case>-
   the largest speed, the speed over the last 0.1 s and the overlap it rests at;
 - restingStack: the same with a second body released 0.02 D above the first, resting on it:
   the same for the upper body, its rest gap to the lower one;
-- wetRebound St 27 and St 152 (validation/wetRebound at 8 cells/d): e/e_dry and the overlap;
+- wetRebound St 27 and St 152 (validation/wetRebound at 8 cells/d): e/e_dry (at separation),
+  e(0.1 a)/e_dry (the speeds at the same gap of 0.1 a in and out, wetRebound's
+  same_gap_restitution) and the overlap;
 - wallCellPenalty (tests/foam/wallCellPenaltyCase, soft): a sphere driven 0.09 a into a wall
   and out; the largest hydrodynamic force after the start over rho_f V U 2 pi f.
 
     stabiliserSensitivity.py run [--case C ...] [--variant V ...] [--force]
+    stabiliserSensitivity.py collect   re-analyse the runs in run/ into results/runs.csv
     stabiliserSensitivity.py plot      results/table.md, metrics.json, sensitivity.png
 
 Each run appends a row to results/runs.csv (its figures, CPU time, host, commit).
@@ -60,13 +63,18 @@ CASES = ("restingOnWall", "restingStack", "wetReboundSt27", "wetReboundSt152", "
 FIGURES = {
     "restingOnWall": ("rest_overlap_b", "max_speed", "late_speed"),
     "restingStack": ("upper_rest_gap_b", "max_speed", "late_speed"),
-    "wetReboundSt27": ("e_over_edry", "max_overlap_a"),
-    "wetReboundSt152": ("e_over_edry", "max_overlap_a"),
+    "wetReboundSt27": ("e_over_edry", "e_same_gap_0.1a", "max_overlap_a"),
+    "wetReboundSt152": ("e_over_edry", "e_same_gap_0.1a", "max_overlap_a"),
     "wallCellPenalty": ("peak_force",),
 }
+# figures beside the headline whose change is reported too: the rebound at separation is one
+# sample in the step where the film's force changes fastest, so its change mixes the knob's
+# effect with where the steps fall; the same-gap ratio is interpolated on the trajectory
+CHANGED = {"wetReboundSt27": ("e_same_gap_0.1a",), "wetReboundSt152": ("e_same_gap_0.1a",)}
 UNITS = {"rest_overlap_b": "overlap at rest / b", "upper_rest_gap_b": "upper body's gap at rest / b",
          "max_speed": "largest speed [m/s]", "late_speed": "speed over the last 0.1 s [m/s]",
-         "e_over_edry": "e/e_dry", "max_overlap_a": "largest overlap / a",
+         "e_over_edry": "e/e_dry", "e_same_gap_0.1a": "e(0.1 a)/e_dry",
+         "max_overlap_a": "largest overlap / a",
          "peak_force": "largest F_z magnitude / (rho_f V U 2 pi f)"}
 FIELDS = ["name", "case", "variant", "figures", "cpu_s", "host", "date", "commit"]
 B = 0.0015874          # the resting bodies' smaller semi-axis (restingOnWallCase)
@@ -115,7 +123,9 @@ def analyse(case, name):
     h5 = os.path.join(case, "postProcessing", "immersedBodies", "bodies.h5")
     if name.startswith("wetRebound"):
         r = wetRebound.analyse(h5, name[len("wetRebound"):])
-        return {"e_over_edry": r["e"] / wetRebound.E_DRY, "max_overlap_a": r["max_overlap_a"]}
+        same = wetRebound.same_gap_restitution(h5, name[len("wetRebound"):], gaps=(0.1,))[0]
+        return {"e_over_edry": r["e"] / wetRebound.E_DRY, "e_same_gap_0.1a": same,
+                "max_overlap_a": r["max_overlap_a"]}
     with h5py.File(h5, "r", locking=False) as f:
         names = [n.decode() if isinstance(n, bytes) else str(n) for n in f["bodyNames"][()]]
         t = f["time"][()]
@@ -161,6 +171,20 @@ def run(name, variant, force):
     write_csv(RUNS_CSV, sorted(rows, key=lambda r: order[(r["case"], r["variant"])]), FIELDS)
 
 
+def collect():
+    """Re-analyse the runs kept in run/ (after a change of the analysis); rows whose run folder
+    is gone keep their figures."""
+    rows = read_csv(RUNS_CSV, missing_ok=False)
+    for row in rows:
+        case = os.path.join(RUNS, row["name"])
+        if os.path.exists(os.path.join(case, "postProcessing", "immersedBodies", "bodies.h5")):
+            figures = analyse(case, row["case"])
+            row["figures"] = ";".join(f"{k}={v:.6g}" for k, v in figures.items())
+        else:
+            print(f"{row['name']}: no run folder, figures kept")
+    write_csv(RUNS_CSV, rows, FIELDS)
+
+
 def figures_of(rows):
     """{(case, variant): {figure: value}} from results/runs.csv."""
     out = {}
@@ -182,22 +206,26 @@ def plot():
         if (case, "default") not in data:
             continue
         base = data[(case, "default")]
+        changed = (FIGURES[case][0],) + CHANGED.get(case, ())
         lines += [f"**{case}**", "", "| variant | " + " | ".join(UNITS[f] for f in FIGURES[case])
-                  + f" | change of {UNITS[FIGURES[case][0]]} |",
-                  "|---|" + "---|" * (len(FIGURES[case]) + 1)]
+                  + "".join(f" | change of {UNITS[f]}" for f in changed) + " |",
+                  "|---|" + "---|" * (len(FIGURES[case]) + len(changed))]
         for variant in VARIANTS:
             if (case, variant) not in data:
                 continue
             fig = data[(case, variant)]
-            head = FIGURES[case][0]
-            change = change_pct(fig[head], base[head])
-            lines.append(f"| {variant} | " + " | ".join(f"{fig[f]:.4g}" for f in FIGURES[case])
-                         + (" | - |" if variant == "default" else f" | {change:+.1f} % |"))
+            changes = {f: change_pct(fig[f], base[f]) for f in changed if f in fig and f in base}
+            lines.append(f"| {variant} | " + " | ".join(f"{fig[f]:.4g}" if f in fig else "-"
+                                                          for f in FIGURES[case])
+                         + "".join(" | -" if variant == "default" or f not in changes
+                                   else f" | {changes[f]:+.1f} %" for f in changed) + " |")
             for f in FIGURES[case]:
-                metrics[f"{case}_{f}_{variant}"] = float(f"{fig[f]:.6g}")
+                if f in fig:
+                    metrics[f"{case}_{f}_{variant}"] = float(f"{fig[f]:.6g}")
             if variant != "default":
-                key = f"{case}_{head}_max_abs_change_pct_{VARIANTS[variant][0]}"
-                metrics[key] = round(max(abs(change), metrics.get(key, 0.0)), 3)
+                for f, change in changes.items():
+                    key = f"{case}_{f}_max_abs_change_pct_{VARIANTS[variant][0]}"
+                    metrics[key] = round(max(abs(change), metrics.get(key, 0.0)), 3)
         lines.append("")
     with open(os.path.join(RESULTS, "table.md"), "w") as f:
         f.write("\n".join(lines))
@@ -243,9 +271,13 @@ def main():
     r.add_argument("--variant", action="append", choices=list(VARIANTS), default=[])
     r.add_argument("--force", action="store_true")
     sub.add_parser("plot")
+    sub.add_parser("collect")
     a = ap.parse_args()
     if a.cmd == "plot":
         plot()
+        return
+    if a.cmd == "collect":
+        collect()
         return
     for case in a.case or CASES:
         for variant in a.variant or VARIANTS:

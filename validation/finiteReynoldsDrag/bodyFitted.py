@@ -7,7 +7,8 @@ along the axis (bodyFittedMesh), half-space three-dimensional meshes at 45 and 9
 
     bodyFitted.py run [--force] [--only NAME ...]   the campaign (two may run at once) (finiteReynoldsDrag.py plot
                                                     adds it to results/table.md, metrics.json)
-    bodyFitted.py collect                           C_D and its change again from the runs' force files
+    bodyFitted.py collect                           C_D, C_L, C_T and their changes again from the
+                                                    runs' force and moment files
     bodyFitted.py single CASE --ar AR --re RE --n-eta N [--incidence DEG] [--iterations I]
         one case in the folder CASE; writes CASE/drag.csv (used by
         tests/foam/finiteReynoldsDragBodyFitted)
@@ -16,6 +17,12 @@ Each case is a steady solve until the initial residuals of p and U fall below 1e
 (simpleFoam's residualControl), at most ITERATIONS iterations: the end is decided inside
 the solver, so the run is deterministic. The drag is the last iteration's; its change
 over the last ITER_WINDOW iterations is recorded. Runs in run-bodyFitted/<name>/ (git-ignored).
+
+The pitching torque C_T = T_z/(rho U^2/2 pi D_eq^2/4 D_eq/2) (Zastawny et al.'s
+normalisation, references.zastawny_torque) is the moment the forces function object
+writes about CofR (0 0 0), the body's centre (the meshes are centred on it), positive
+when it turns the symmetry axis (x) away from the stream (cos theta, sin theta, 0),
+towards broadside: C_T = -T_z/(...).
 """
 import argparse
 import fcntl
@@ -42,7 +49,8 @@ N_ETA_3D = (32, 48, 72)  # the half-space meshes, n_eta/2 cells over phi in [0, 
 N_ETA_3D_RE100 = 108     # a fourth for the spheroid at Re 100 (its coarse meshes converge slowly)
 ITERATIONS_RE100_FINEST = 400   # its cap (1 M cells); the table reports how much it still moves
 FIELDS = ["name", "ar", "Re", "incidence", "n_eta", "cells", "wall_cells_per_D", "iterations",
-          "C_D", "C_L", "C_D_change_pct", "C_L_change_pct", "cpu_s", "host", "date", "commit"]
+          "C_D", "C_L", "C_D_change_pct", "C_L_change_pct", "cpu_s", "host", "date", "commit",
+          "C_T", "C_T_change_pct"]
 SIDES = {"wedge": "front { type wedge; }\n    back { type wedge; }",
          "half": "symmetry { type symmetryPlane; }"}
 
@@ -141,23 +149,38 @@ def write_case(case, ar, re, n_eta, incidence=0, iterations=ITERATIONS):
     return bodyFittedMesh.write_mesh(case, ar, n_eta, OUTER_RADIUS)
 
 
-def read_coefficients(case, incidence=0):
-    """[(C_D, C_L)] per iteration: the force along and across the stream (in the plane of
-    the stream and the axis) of the whole body (the wedge's times 360/WEDGE_DEG, the half
-    space's times 2) over rho U^2/2 pi/4."""
-    path = os.path.join(case, "postProcessing", "forces", "0", "force.dat")
-    whole = 2.0 if incidence else 360.0 / bodyFittedMesh.WEDGE_DEG
-    scale = whole / (0.5 * math.pi / 4)
-    theta = math.radians(incidence)
+def _vectors(path):
+    """The first vector (the total) of each line of a forces function object's file."""
     out = []
     with open(path) as f:
         for line in f:
             if line.startswith("#") or not line.strip():
                 continue
             v = line.replace("(", " ").replace(")", " ").split()
-            fx, fy = float(v[1]), float(v[2])
-            lift = abs(-fx * math.sin(theta) + fy * math.cos(theta)) if incidence else 0.0
-            out.append((scale * (fx * math.cos(theta) + fy * math.sin(theta)), scale * lift))
+            out.append((float(v[1]), float(v[2]), float(v[3])))
+    return out
+
+
+def read_coefficients(case, incidence=0):
+    """[(C_D, C_L, C_T)] per iteration: the force along and across the stream (in the plane
+    of the stream and the axis) of the whole body (the wedge's times 360/WEDGE_DEG, the half
+    space's times 2) over rho U^2/2 pi/4, and the pitching torque about the centre over
+    rho U^2/2 pi/4 1/2 (zero by symmetry on the wedge). The mirror image of the half space
+    in z = 0 has the same T_z, so the whole body's is twice the half's."""
+    folder = os.path.join(case, "postProcessing", "forces", "0")
+    whole = 2.0 if incidence else 360.0 / bodyFittedMesh.WEDGE_DEG
+    scale = whole / (0.5 * math.pi / 4)
+    theta = math.radians(incidence)
+    forces = _vectors(os.path.join(folder, "force.dat"))
+    torques = (_vectors(os.path.join(folder, "moment.dat")) if incidence
+               else [(0.0, 0.0, 0.0)] * len(forces))
+    if len(torques) != len(forces):
+        raise RuntimeError(f"{case}: force.dat and moment.dat have different lengths")
+    out = []
+    for (fx, fy, _), (_, _, tz) in zip(forces, torques):
+        lift = abs(-fx * math.sin(theta) + fy * math.cos(theta)) if incidence else 0.0
+        out.append((scale * (fx * math.cos(theta) + fy * math.sin(theta)), scale * lift,
+                    -scale * tz / 0.5))
     return out
 
 
@@ -169,14 +192,17 @@ def wall_cells_per_d(ar, n_eta):
 
 
 def force_columns(coefficients):
-    """The columns iterations, C_D and C_L (the last iteration's) and C_D_change_pct,
-    C_L_change_pct (their change over the last ITER_WINDOW iterations, or half the run if
-    shorter, relative; 0 for a lift below 1e-4, zero by symmetry)."""
+    """The columns iterations, C_D, C_L and C_T (the last iteration's) and C_D_change_pct,
+    C_L_change_pct, C_T_change_pct (their change over the last ITER_WINDOW iterations, or
+    half the run if shorter, relative; 0 for a lift or torque below 1e-4, zero by
+    symmetry)."""
     back = -1 - min(ITER_WINDOW, len(coefficients) // 2)
-    (cd, cl), (cd0, cl0) = coefficients[-1], coefficients[back]
+    (cd, cl, ct), (cd0, cl0, ct0) = coefficients[-1], coefficients[back]
     return dict(iterations=len(coefficients), C_D=f"{cd:.6f}", C_L=f"{cl:.6f}",
                 C_D_change_pct=f"{100 * (cd - cd0) / cd:.2e}",
-                C_L_change_pct=f"{100 * (cl - cl0) / cl if cl > 1e-4 else 0.0:.2e}")
+                C_L_change_pct=f"{100 * (cl - cl0) / cl if cl > 1e-4 else 0.0:.2e}",
+                C_T=f"{ct:.6f}",
+                C_T_change_pct=f"{100 * (ct - ct0) / ct if abs(ct) > 1e-4 else 0.0:.2e}")
 
 
 def run_case(name, ar, re, n_eta, incidence=0, case=None, iterations=ITERATIONS):

@@ -103,6 +103,32 @@ def _pct(a, b):
     return 100 * (a - b) / b
 
 
+def torque(csv_path, ar=2.5, incidence=45.0):
+    """The body-fitted pitching torque C_T (bodyFitted.py: about the centre, positive
+    towards broadside) of one body at one incidence: {Re: dict(meshes [(n_eta, C_T,
+    change %)] coarse to fine, used (the meshes of the series), order, value, finest (True
+    where the value is the finest mesh's))}. As for the lift, the series leaves out runs
+    whose torque changed by more than STEADY_PCT over their last 50 iterations; order and
+    extrapolation from the last three (extrapolate)."""
+    out = {}
+    for r in _read(csv_path):
+        if (float(r["ar"]), float(r.get("incidence") or 0)) != (ar, incidence) \
+                or r.get("C_T") in (None, ""):
+            continue
+        out.setdefault(float(r["Re"]), []).append(
+            (int(r["n_eta"]), float(r["C_T"]), float(r["C_T_change_pct"])))
+    result = {}
+    for re, meshes in sorted(out.items()):
+        meshes.sort()
+        used = [m for m in meshes if abs(m[2]) <= STEADY_PCT]
+        if len(used) < 3:
+            continue
+        p, value = extrapolate([m[1] for m in used], used[-1][0] / used[-2][0])
+        result[re] = dict(meshes=meshes, used=used, order=p, value=value,
+                          finest=not asymptotic(p))
+    return result
+
+
 def _along_axis(all_series, metrics):
     lines = ["## Body-fitted reference along the axis (axisymmetric)", "",
              "Produced by `validation/finiteReynoldsDrag/bodyFitted.py run` (simpleFoam, no "

@@ -17,7 +17,10 @@ single: one case in the folder CASE (used by tests/foam/finiteReynoldsDragQuick)
      writes CASE/drag.csv (C_D, C_L at the end, cells, steps).
 
 C_D = F_x / (rho U^2/2 pi D_eq^2/4), C_L = |F_y| / (same), D_eq the diameter of
-the equal-volume sphere (the normalisation of Zastawny et al. 2012).
+the equal-volume sphere (the normalisation of Zastawny et al. 2012); the pitching
+torque C_T = T_z / (rho U^2/2 pi D_eq^2/4 D_eq/2), T the hydrodynamic torque about the
+body's centre (bodies.h5 hydroTorque), positive when it turns the symmetry axis away
+from the stream (towards broadside): the axis (cos phi, sin phi, 0) at incidence phi.
 """
 import argparse
 import json
@@ -40,8 +43,9 @@ RUNS_CSV = os.path.join(RESULTS, "runs.csv")
 END_TIME = 40.0
 SETTLE_WINDOW = 10.0   # the convergence figure: change of C_D over the last window
 AREA = math.pi / 4
+ARM = 0.5              # the torque's reference length D_eq/2 (Zastawny et al.'s C_T)
 FIELDS = ["name", "shape", "ar", "incidence", "Re", "cpd", "cells", "dt", "steps",
-          "C_D", "C_L", "C_D_change_pct", "cpu_s", "host", "date", "commit"]
+          "C_D", "C_L", "C_D_change_pct", "cpu_s", "host", "date", "commit", "C_T"]
 
 
 def campaign():
@@ -60,17 +64,18 @@ def campaign():
 
 
 def read_force(case):
-    """time[N], hydroForce[N, 3] of the body from its HDF5 series."""
+    """time[N], hydroForce[N, 3], hydroTorque[N, 3] (about the centre) of the body from
+    its HDF5 series."""
     import h5py
     path = os.path.join(case, "postProcessing", "immersedBodies", "bodies.h5")
     with h5py.File(path, "r", locking=False) as f:
-        n = min(f[k].shape[0] for k in ("time", "hydroForce"))
-        return f["time"][:n], f["hydroForce"][:n, 0, :]
+        n = min(f[k].shape[0] for k in ("time", "hydroForce", "hydroTorque"))
+        return f["time"][:n], f["hydroForce"][:n, 0, :], f["hydroTorque"][:n, 0, :]
 
 
 def run_case(case, ar, incidence, re, cpd, end_time=END_TIME, domain=caseWriter.DOMAIN):
     """Write, mesh and run one case in the folder case (replaced); returns its figures
-    and the history (t, C_D, C_L)."""
+    and the history (t, C_D, C_L, C_T)."""
     if os.path.exists(case):
         subprocess.run(["rm", "-rf", case], check=True)
     dt, steps, cells = caseWriter.write_case(case, ar, incidence, re, cpd, end_time,
@@ -79,22 +84,25 @@ def run_case(case, ar, incidence, re, cpd, end_time=END_TIME, domain=caseWriter.
     rc = run_logged(["nice", "-n", "10", "pimpleFoam"], case, "log.solver")
     if rc != 0:
         raise RuntimeError(f"pimpleFoam failed in {case} (see log.solver)")
-    t, F = read_force(case)
+    t, F, T = read_force(case)
     cd, cl = F[:, 0] / (0.5 * AREA), np.abs(F[:, 1]) / (0.5 * AREA)
+    # T_z turns the axis (cos phi, sin phi, 0) towards larger phi, away from the stream x
+    ct = T[:, 2] / (0.5 * AREA * ARM)
     if not np.all(np.isfinite(cd)) or t[-1] < steps * dt - 1e-6:
         raise RuntimeError(f"{case}: the force history is incomplete or not finite")
     before = np.interp(t[-1] - min(SETTLE_WINDOW, 0.5 * t[-1]), t, cd)
     row = dict(shape="sphere" if ar == 1 else "prolate", ar=ar, incidence=incidence, Re=re,
                cpd=cpd, cells=cells, dt=f"{dt:.6g}", steps=steps, C_D=f"{cd[-1]:.6f}",
                C_L=f"{cl[-1]:.6f}", C_D_change_pct=f"{100 * (cd[-1] - before) / cd[-1]:.4f}",
-               cpu_s=f"{cpu_seconds(case):.0f}")
-    return row, (t, cd, cl)
+               cpu_s=f"{cpu_seconds(case):.0f}", C_T=f"{ct[-1]:.6f}")
+    return row, (t, cd, cl, ct)
 
 
 def run_one(name, **kw):
-    row, (t, cd, cl) = run_case(os.path.join(HERE, "run", name), **kw)
-    np.savetxt(os.path.join(RESULTS, f"{name}.dat"), np.column_stack([t, cd, cl]),
-               header="t [D_eq/U], C_D, |C_L|", fmt="%.8g")
+    row, history = run_case(os.path.join(HERE, "run", name), **kw)
+    np.savetxt(os.path.join(RESULTS, f"{name}.dat"), np.column_stack(history),
+               header="t [D_eq/U], C_D, |C_L|, C_T (pitching, positive towards broadside)",
+               fmt="%.8g")
     return dict(name=name, **row, **provenance())
 
 
@@ -112,9 +120,12 @@ def do_run(args):
         if (args.only and name not in args.only) or name in done:
             continue
         row = run_one(name, **kw)
-        print(f"  -> C_D {row['C_D']}, C_L {row['C_L']} (change over the last "
+        print(f"  -> C_D {row['C_D']}, C_L {row['C_L']}, C_T {row['C_T']} (change over the last "
               f"{SETTLE_WINDOW:g} D/U: {row['C_D_change_pct']} %)", flush=True)
-        write_csv(RUNS_CSV, [r for r in read_csv(RUNS_CSV) if r["name"] != name] + [row], FIELDS)
+        old = read_csv(RUNS_CSV)    # a rerun keeps its row's place
+        rows = [row if r["name"] == name else r for r in old]
+        write_csv(RUNS_CSV, rows if any(r["name"] == name for r in old) else old + [row],
+                  FIELDS)
 
 
 def do_plot():
@@ -126,7 +137,7 @@ def do_plot():
         r["cpd"], r["incidence"] = int(r["cpd"]), int(r["incidence"])
     metrics = {}
     md = plotDrag.tables(rows, metrics)
-    body_fitted = {}
+    body_fitted, body_fitted_torque = {}, {}
     csv_body_fitted = os.path.join(RESULTS, "bodyFitted.csv")
     if os.path.exists(csv_body_fitted):
         import bodyFittedTable
@@ -134,6 +145,8 @@ def do_plot():
         md += [""] + lines
         metrics.update(more)
         body_fitted = bodyFittedTable.extrapolated(csv_body_fitted)
+        body_fitted_torque = bodyFittedTable.torque(csv_body_fitted)
+    md += plotDrag.torque_table(rows, metrics, RESULTS, body_fitted_torque)
     with open(os.path.join(RESULTS, "table.md"), "w") as f:
         f.write("\n".join(md) + "\n")
     with open(os.path.join(RESULTS, "metrics.json"), "w") as f:

@@ -5,6 +5,7 @@ import os
 
 import numpy as np
 
+import bodyFittedTable
 import references as ref
 
 HEADLINE_CPD = 16
@@ -158,6 +159,85 @@ def resolution_series(rows, incidence, metrics):
             f"{', '.join(str(r['cpd']) for r in series)} cells/D: C_D {cds}; observed order over "
             f"the three finest {order}. Extrapolated (second order from the two finest): C_D "
             f"{cd_inf:.4f} ({100 * (f2['C_D'] / cd_inf - 1):+.2f} % at {f2['cpd']})" + lift + "."]
+
+
+def torque_table(rows, metrics, results, body_fitted=None):
+    """The pitching torque of the prolate spheroid at 45 degrees: the immersed runs that
+    recorded it (runs.csv column C_T), the body-fitted reference (bodyFittedTable.torque:
+    {Re: dict(meshes, used, order, value, finest)}) and Zastawny's torque correlation."""
+    body_fitted = body_fitted or {}
+    runs = sorted((r for r in rows if r["shape"] == "prolate" and r["incidence"] == 45
+                   and r.get("C_T") not in (None, "")), key=lambda r: (r["Re"], r["cpd"]))
+    if not runs:
+        return []
+    md = ["", "## Pitching torque of the prolate spheroid at 45 degrees", "",
+          "C_T = T_z/(rho U^2/2 pi D_eq^2/4 D_eq/2), T the hydrodynamic torque about the "
+          "body's centre, the normalisation of Zastawny et al.'s torque correlation "
+          "(references.zastawny_torque, c1..c10 = "
+          + ", ".join(f"{c:g}" for c in ref.ZASTAWNY_TORQUE_AR25) + "); the magnitude is "
+          "compared, the column \"turns the axis\" gives the sign. Immersed: bodies.h5 "
+          "hydroTorque at t = 40 D_eq/U, \"change\" C_T(40) - C_T(30) relative. Body-fitted: "
+          "the moment of the forces function object about CofR (0 0 0), the body's centre, "
+          "twice the half space's; order and extrapolation from the three finest meshes whose "
+          f"torque changed by at most {bodyFittedTable.STEADY_PCT:g} % over their last 50 "
+          "iterations (\"finest\" where the order is outside 1-3).", "",
+          "| Re | cells/D | immersed C_T | turns the axis | change | body-fitted C_T on the "
+          "meshes (n) | order | body-fitted | Zastawny | immersed - Zastawny | "
+          "immersed - body-fitted | Zastawny - body-fitted |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in runs:
+        re, ct = r["Re"], float(r["C_T"])
+        z = ref.zastawny_torque(re, 45)
+        change = "-"
+        dat = os.path.join(results, f"{r['name']}.dat")
+        if os.path.exists(dat):
+            d = np.loadtxt(dat)
+            if d.ndim == 2 and d.shape[1] >= 4:
+                before = np.interp(d[-1, 0] - 10.0, d[:, 0], d[:, 3])
+                change = f"{100 * (d[-1, 3] - before) / d[-1, 3]:+.4f} %"
+        bf = body_fitted.get(re)
+        d_z = pct(abs(ct), z)
+        cells = [f"{re:g}", str(r["cpd"]), f"{abs(ct):.4f}",
+                 "towards broadside" if ct > 0 else "towards the stream", change]
+        if bf:
+            meshes = " / ".join(f"{c:.4f} ({n})" for n, c, _ in bf["meshes"])
+            left_out = [m for m in bf["meshes"] if m not in bf["used"]]
+            if left_out:
+                meshes += "; left out: " + ", ".join(
+                    f"n {n}, changing by {abs(c):.2g} % over its last 50 iterations"
+                    for n, _, c in left_out)
+            d_bf, z_bf = pct(abs(ct), bf["value"]), pct(z, bf["value"])
+            cells += [meshes, f"{bf['order']:.2f}",
+                      f"{bf['value']:.4f}" + (" (finest)" if bf["finest"] else "")]
+        else:
+            cells += ["-", "-", "-"]
+        cells += [f"{z:.4f}", f"{d_z:+.2f} %"]
+        cells += [f"{d_bf:+.2f} %", f"{z_bf:+.2f} %"] if bf else ["-", "-"]
+        md.append("| " + " | ".join(cells) + " |")
+        if r["cpd"] == HEADLINE_CPD:
+            key = f"Re{re:g}_{HEADLINE_CPD}"
+            metrics[f"spheroid_torque45_{key}"] = round(abs(ct), 4)
+            metrics[f"spheroid_torque45_towards_broadside_{key}"] = bool(ct > 0)
+            metrics[f"spheroid_torque45_vs_zastawny_pct_{key}"] = round(d_z, 3)
+            if bf:
+                metrics[f"spheroid_torque45_vs_body_fitted_pct_{key}"] = round(d_bf, 3)
+    turns = {re: all(c > 0 for _, c, _ in bf["meshes"]) for re, bf in body_fitted.items()}
+    broadside = [f"{re:g}" for re, t in sorted(turns.items()) if t]
+    stream = [f"{re:g}" for re, t in sorted(turns.items()) if not t]
+    if broadside:
+        md += ["", "The body-fitted torque turns the axis towards broadside on every mesh at Re "
+               + " and ".join(broadside) + "."]
+    if stream:
+        md += ["", "The body-fitted torque turns the axis towards the stream on some mesh at Re "
+               + " and ".join(stream) + "."]
+    for re, bf in sorted(body_fitted.items()):
+        key = f"prolate_Re{re:g}_i45"
+        metrics[f"body_fitted_{key}_C_T_towards_broadside"] = turns[re]
+        metrics[f"body_fitted_{key}_C_T"] = round(bf["value"], 5)
+        metrics[f"body_fitted_{key}_C_T_order"] = round(bf["order"], 2)
+        metrics[f"zastawny_torque_vs_body_fitted_pct_{key}"] = round(
+            pct(ref.zastawny_torque(re, 45), bf["value"]), 3)
+    return md
 
 
 def tables(rows, metrics):

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
-"""Published drag and lift of a sphere and of a prolate spheroid AR 2.5 in a uniform
-stream (validation/finiteReynoldsDrag). Re = U D_eq/nu; coefficients normalised by
-rho U^2/2 pi D_eq^2/4, D_eq the diameter of the equal-volume sphere."""
+"""Published drag, lift and pitching torque of a sphere and of a prolate spheroid AR 2.5
+in a uniform stream (validation/finiteReynoldsDrag). Re = U D_eq/nu; force coefficients
+normalised by rho U^2/2 pi D_eq^2/4, the torque's by rho U^2/2 pi D_eq^2/4 D_eq/2, D_eq the
+diameter of the equal-volume sphere."""
 import math
 
 # Johnson & Patel (1999, JFM 378, 19), body-fitted steady axisymmetric sphere wakes
@@ -50,6 +51,27 @@ def zastawny_lift(re, phi_deg, b=ZASTAWNY_LIFT_AR25):
     return ((b[0] / re ** b[1] + b[2] / re ** b[3])
             * math.sin(p) ** (b[4] + b[5] * re ** b[6])
             * math.cos(p) ** (b[7] + b[8] * re ** b[9]))
+
+
+# Zastawny et al.'s pitching torque for the same ellipsoid, the form of their lift:
+# C_T = (c1/Re^c2 + c3/Re^c4) sin(phi)^(c5 + c6 Re^c7) cos(phi)^(c8 + c9 Re^c10), with
+# C_T = T_z/(rho U^2/2 pi D_eq^2/4 D_eq/2): the torque about the centre over the drag's
+# reference force times the equal-volume sphere's radius, Re = U D_eq/nu, valid for
+# 0.1 <= Re <= 300 and 0 <= phi <= 90 degrees. c1..c10 for AR 2.5 ("gamma = 5/2") and the
+# normalisation from the same transcription as ZASTAWNY_LIFT_AR25: the Basilisk sandbox
+# file myspheroid.h ("Utility functions for spheroids", section "Correlations for the drag,
+# lift and pitching torque coefficients of a spheroid", function torque_Zastawny2012); the
+# public-code index that holds the file gives its text but not its repository or path.
+# The form is positive for 0 < phi < 90 and that source states no sign convention for T_z,
+# so the magnitude is compared (validation/finiteReynoldsDrag/plotDrag.torque_table).
+ZASTAWNY_TORQUE_AR25 = (2.078, 0.279, 0.372, 0.018, 0.98, 0.0, 0.0, 1.0, 0.0, 0.0)
+
+
+def zastawny_torque(re, phi_deg, c=ZASTAWNY_TORQUE_AR25):
+    p = math.radians(phi_deg)
+    return ((c[0] / re ** c[1] + c[2] / re ** c[3])
+            * math.sin(p) ** (c[4] + c[5] * re ** c[6])
+            * math.cos(p) ** (c[7] + c[8] * re ** c[9]))
 
 
 def linear_resistance_lift(re, phi_deg):

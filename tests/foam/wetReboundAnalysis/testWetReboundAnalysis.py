@@ -1,0 +1,99 @@
+#!/usr/bin/python3
+"""Unit test of validation/wetRebound/wetRebound.py's analysis (run by
+tests/foam/wetReboundAnalysis/run) on a synthetic body time series with a known answer:
+a sphere of the St 152 case approaching the wall at 1 m/s, in contact for 1 ms, leaving at
+0.6 m/s and decelerating uniformly to a known top gap and back to 0.1 a; the collision force
+is on from a gap of one radius on the way in to 0.2 a on the way out."""
+import math
+import os
+import sys
+import tempfile
+import unittest
+from pathlib import Path
+
+import h5py
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "validation" / "wetRebound"))
+import wetRebound as wr  # noqa: E402
+
+NAME = "St152"
+A = wr.CASES[NAME][4] / 2      # radius [m]
+U_IN, U_OUT = 1.0, 0.6          # approach and leaving speeds [m/s]
+TOP = 0.5                       # the rebound's height over the radius
+DECEL = U_OUT ** 2 / (2 * TOP * A)
+CONTACT = 1e-3                  # s
+DT = 1e-5
+
+
+def trajectory():
+    """time, gap [m], vertical velocity, collision force of the synthetic bounce."""
+    g0 = 1.5 * A
+    t_touch = g0 / U_IN
+    t_leave = t_touch + CONTACT
+    delta = CONTACT / math.pi * U_IN        # overlap amplitude: the velocity is continuous at the touch
+    # to the fall back through a gap of 0.1 a (a real series would meet the wall again there)
+    fall = (U_OUT + math.sqrt(U_OUT ** 2 - 2 * DECEL * 0.1 * A)) / DECEL
+    t = np.arange(0.0, t_leave + fall, DT)
+    gap, w, fc = np.zeros_like(t), np.zeros_like(t), np.zeros_like(t)
+    for k, tk in enumerate(t):
+        if tk < t_touch:
+            gap[k], w[k] = g0 - U_IN * tk, -U_IN
+            fc[k] = 1.0 if gap[k] < A else 0.0
+        elif tk < t_leave:
+            s = math.pi * (tk - t_touch) / CONTACT
+            gap[k], w[k], fc[k] = -delta * math.sin(s), -delta * math.pi / CONTACT * math.cos(s), 1.0
+        else:
+            tau = tk - t_leave
+            gap[k], w[k] = U_OUT * tau - 0.5 * DECEL * tau ** 2, U_OUT - DECEL * tau
+            fc[k] = 1.0 if (gap[k] < 0.2 * A and w[k] > 0) else 0.0
+    return t, gap, w, fc
+
+
+def write_h5(path):
+    t, gap, w, fc = trajectory()
+    n = len(t)
+    vec = lambda z: np.stack([np.zeros(n), np.zeros(n), z], axis=1).reshape(n, 1, 3)  # noqa: E731
+    with h5py.File(path, "w") as f:
+        f["time"] = t
+        f["centre"] = vec(gap + A)
+        f["velocity"] = vec(w)
+        f["collisionForce"] = vec(fc)
+        f["hydroForce"] = vec(np.zeros(n))
+
+
+def speed_out(h):
+    """The exact leaving speed at the gap h (over the radius)."""
+    return math.sqrt(U_OUT ** 2 - 2 * DECEL * h * A)
+
+
+class WetReboundAnalysis(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.dir = tempfile.mkdtemp(dir=os.environ.get("TMPDIR"))
+        cls.h5 = os.path.join(cls.dir, "bounce.h5")
+        write_h5(cls.h5)
+
+    def test_rebound_speeds(self):
+        r = wr.analyse(self.h5, NAME)
+        self.assertAlmostEqual(r["U_in"], U_IN, places=9)
+        self.assertAlmostEqual(r["e"], U_OUT / U_IN, delta=2 * DECEL * DT)
+        # after the film: the first sample with no collision force on the way out, at 0.2 a
+        self.assertAlmostEqual(r["e_after_film"], speed_out(0.2), delta=2 * DECEL * DT)
+
+    def test_top_gap_is_the_rebound_height(self):
+        # the collision force is on from a gap of one radius on the way in: the rebound's
+        # height (0.5 a) must not be confused with that approach gap
+        r = wr.analyse(self.h5, NAME)
+        self.assertAlmostEqual(r["top_gap_a"], TOP, delta=1e-4)
+
+    def test_same_gap_restitution(self):
+        gaps = (0.05, 0.1, 0.2, 0.3, 0.6)
+        values = wr.same_gap_restitution(self.h5, NAME, gaps=gaps)
+        for h, v in zip(gaps[:-1], values[:-1]):
+            self.assertAlmostEqual(v, speed_out(h) / U_IN / wr.E_DRY, delta=1e-4, msg=f"h = {h} a")
+        self.assertEqual(values[-1], 0.0, "a gap above the rebound's height gives zero")
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)

@@ -969,6 +969,83 @@ void capSweep(const Options& o, Checks& checks) {
   }
 }
 
+
+// ---------------------------------------------------------------------------
+// 6: oblique sphere-wall impacts with Coulomb friction (the tangential spring)
+
+/// The rigid-body impact theory of a sphere on a plane with Coulomb friction
+/// (Maw, Barber & Fawcett 1976; Walton 1993), in the variables Joseph & Hunt
+/// (2004) use: Psi = v_t / u_n, the tangential speed of the contact point over
+/// the normal impact speed. Sliding throughout the contact (Psi_in above
+/// Psi_c = 7/2 mu (1 + e)/(1 + beta0)): Psi_out = Psi_in - 7/2 mu (1 + e);
+/// sticking: Psi_out = -beta0 Psi_in.
+Scalar psiOutTheory(Scalar psiIn, Scalar mu, Scalar e, Scalar beta0) {
+  const Scalar psiC = 3.5 * mu * (1 + e) / (1 + beta0);
+  return psiIn > psiC ? psiIn - 3.5 * mu * (1 + e) : -beta0 * psiIn;
+}
+
+void obliqueSphereWall(const Options& o, Checks& checks) {
+  const std::vector<Scalar> mus = o.quick ? std::vector<Scalar>{0.15} : std::vector<Scalar>{0.05, 0.15, 0.3};
+  const std::vector<Scalar> es = o.quick ? std::vector<Scalar>{0.97} : std::vector<Scalar>{0.97, 0.8};
+  const std::vector<Scalar> psis =
+      o.quick ? std::vector<Scalar>{0.1, 0.5, 2.0}
+              : std::vector<Scalar>{0.02, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7,
+                                    0.8, 1.0, 1.2, 1.5, 2.0, 3.0, 4.0};
+  const int n = 10;
+  const Scalar un = 0.02;  // as the head-on wall impacts (uncapped contact time T_c)
+  std::ofstream csv = openCsv(o, "obliqueSphereWall.csv",
+                              "mu,e,N,psiIn,psiOut,psiOutTheory,eMeasured,muEffective,"
+                              "reboundTangent,maxOverlapRatio");
+  for (Scalar mu : mus) {
+    for (Scalar e : es) {
+      for (Scalar psi : psis) {
+        const Scalar g0 = un * 1.4 * kTc / n;
+        std::vector<RigidBody> b{makeBody(Vec3::Constant(0.5), Vec3(0, 0, 0.5 + g0),
+                                          Quat::Identity(), Vec3(psi * un, 0, -un))};
+        DrySettings s = contactSettings(e, n, mu);
+        CollisionModel model = dryModel(s, {kFloor});
+        bool touched = false;
+        Scalar time = 0;
+        std::string error;
+        try {
+          if (!advance(b, model, g0 / un + 10 * kTc, time, [&](Scalar, int) {
+                if (model.activeContacts() > 0) touched = true;
+                return touched && model.activeContacts() == 0;
+              })) {
+            error = "the contact did not end";
+          }
+        } catch (const std::exception& ex) {
+          error = ex.what();
+        }
+        const Vec3 contact = b[0].centre - Vec3(0, 0, 0.5);
+        const Scalar psiOut = pointVelocity(b[0], contact).x() / un;
+        const Scalar eMeasured = b[0].velocity.z() / un;
+        const Scalar muEff = (psi * un - b[0].velocity.x()) / ((1 + eMeasured) * un);
+        // the theory with the measured normal restitution and beta0 = e (the
+        // tangential spring has the normal one's period and damping)
+        const Scalar theory = psiOutTheory(psi, mu, eMeasured, e);
+        csv << mu << "," << e << "," << n << "," << psi << "," << psiOut << "," << theory << ","
+            << eMeasured << "," << muEff << "," << b[0].velocity.x() / b[0].velocity.z() << ","
+            << model.statistics().maxOverlapRatio << "\n";
+        const std::string where = "mu=" + fmt(mu) + " e=" + fmt(e) + " Psi_in=" + fmt(psi);
+        checks.require("6 oblique sphere-wall: contact made and ended, finite",
+                       error.empty() && finite(b), where + " " + error);
+        const Scalar psiC = 3.5 * mu * (1 + eMeasured) / (1 + e);
+        // sliding: the impulse ratio is mu, less the short sticking phase at the start of the
+        // contact and the partial slip at its end (the spring's elastic tangential compliance,
+        // as in Maw, Barber & Fawcett's elastic theory), which fade as Psi_in grows
+        if (psi >= 2 * psiC) {
+          checks.atMost("6 oblique sphere-wall: sliding (Psi_in >= 2 Psi_c), |mu_eff/mu - 1|",
+                        std::abs(muEff / mu - 1), 0.04, where);
+        } else if (psi < 0.75 * psiC) {
+          checks.atMost("6 oblique sphere-wall: sticking, |Psi_out/Psi_in + e|",
+                        std::abs(psiOut / psi + e), 0.05, where);
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -984,7 +1061,7 @@ int main(int argc, char** argv) {
     } else {
       std::cerr << "usage: dryCollisions [--quick] [--out DIR] [--only PART]\n"
                    "  PART: 1 sphere-sphere, 2 sphere-wall, 3 spheroid-wall, 4 spheroid pairs,\n"
-                   "        5 cap sweep and extremes\n";
+                   "        5 cap sweep and extremes, 6 oblique sphere-wall\n";
       return 2;
     }
   }
@@ -1005,6 +1082,7 @@ int main(int argc, char** argv) {
       {"4 spheroid pairs", spheroidPairs},
       {"5 cap sweep", capSweep},
       {"5 extremes", extremes},
+      {"6 oblique sphere-wall", obliqueSphereWall},
   };
   std::ostringstream timing;
   try {

@@ -985,7 +985,7 @@ Scalar psiOutTheory(Scalar psiIn, Scalar mu, Scalar e, Scalar beta0) {
 }
 
 void obliqueSphereWall(const Options& o, Checks& checks) {
-  const std::vector<Scalar> mus = o.quick ? std::vector<Scalar>{0.15} : std::vector<Scalar>{0.05, 0.15, 0.3};
+  const std::vector<Scalar> mus = o.quick ? std::vector<Scalar>{0.15} : std::vector<Scalar>{0.05, 0.1, 0.15, 0.3};
   const std::vector<Scalar> es = o.quick ? std::vector<Scalar>{0.97} : std::vector<Scalar>{0.97, 0.8};
   const std::vector<Scalar> psis =
       o.quick ? std::vector<Scalar>{0.1, 0.5, 2.0}

@@ -10,9 +10,9 @@ dry impacts of the collision core (validation/dryCollisions, part 6).
 run:  each impact in run/<name>/ (git-ignored), serial, nice; the body time series is
       copied to results/<name>.h5 and a line appended to results/runs.csv; finished runs
       are skipped unless --force. --quick: one impact at 30 degrees at 6 cells/d
-      (results/quick.csv).
-plot: results/table.md, metrics.json, psi.png (Psi_out against Psi_in), friction.png
-      (mu_eff against Psi_in) and angles.png (rebound angle against impact angle).
+      (run-quick/quick.csv, git-ignored).
+plot: results/table.md, metrics.json, psi.png (Psi_out and mu_eff against Psi_in)
+      and angles.png (rebound angle against impact angle).
 collect: recompute the measured columns of results/runs.csv from results/<name>.h5.
 
 Set-up: the St 152 case of validation/wetRebound (steel, d = 3 mm, oil rho_f 935,
@@ -44,6 +44,8 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
 from validationTools import (cpu_seconds, provenance, read_csv, run_logged,  # noqa: E402
                              substitute_re, write_csv)
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "wetRebound"))
+import wetRebound as wr  # noqa: E402  (the normal rebound's case, St 152)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 RESULTS = os.path.join(HERE, "results")
@@ -51,10 +53,10 @@ RUNS_CSV = os.path.join(RESULTS, "runs.csv")
 DRY_CSV = os.path.join(HERE, "..", "dryCollisions", "results", "obliqueSphereWall.csv")
 NORMAL_CSV = os.path.join(HERE, "..", "wetRebound", "results", "runs.csv")
 
-# the St 152 case of Gondret et al. 2002 (validation/wetRebound): St, rho_f, mu, d
-ST, RHO_F, MU, D = 152, 935.0, 0.010, 3e-3
-RHO_P = 7800.0
-E_DRY = 0.97
+# the St 152 case of Gondret et al. 2002 (validation/wetRebound): St, mu, d
+ST, _, _, MU, D = wr.CASES["St152"]
+RHO_P = wr.RHO_P
+E_DRY = wr.E_DRY
 FRICTION = 0.1
 ANGLES = (5, 10, 20, 30, 40, 50, 60)
 
@@ -71,42 +73,31 @@ def box_length(angle):
     return 4 + math.ceil(4 * math.tan(math.radians(angle)) - 1e-9)
 
 
-def write_case(case, angle, cpd, friction, end_factor=1.0):
-    a = D / 2
-    u = 9 * ST * MU / (RHO_P * D)
-    h = D / cpd
-    dt = 0.4 * h / u
+def write_case(case, angle, cpd, friction):
+    """The normal wet rebound's case (wetRebound.write_case, St 152), lengthened along x,
+    with the release moved to 2d from the wall behind it, the tangential speed and the
+    friction."""
+    info = wr.write_case(case, "St152", cpd)
+    u = info["U_release"]
     lxd = box_length(angle)
-    lx, ly, lz = lxd * D, 4 * D, 5 * D
-    nx, ny, nz = round(lxd * cpd), round(4 * cpd), round(5 * cpd)
-    end = end_factor * (2.0 * D / u + 40 * dt + 0.6 * D / u)
-    shutil.rmtree(case, ignore_errors=True)
-    shutil.copytree(os.path.join(HERE, "caseTemplate"), case)
+    lx, ly = lxd * D, 4 * D
+    nx, ny = round(lxd * cpd), round(4 * cpd)
     mm = 1e3
     bm = f"{case}/system/blockMeshDict"
-    substitute_re(bm, r"^// .*cells.*$",
-                  f"// {lxd}d x 4d x 5d, d = {D * mm:g} mm, {cpd} cells per d")
-    substitute_re(bm, r"\(9 0 0\) \(9 9 0\) \(0 9 0\)",
-                  f"({lx * mm:g} 0 0) ({lx * mm:g} {ly * mm:g} 0) (0 {ly * mm:g} 0)")
-    substitute_re(bm, r"\(0 0 12\) \(9 0 12\) \(9 9 12\) \(0 9 12\)",
-                  f"(0 0 {lz * mm:g}) ({lx * mm:g} 0 {lz * mm:g}) "
-                  f"({lx * mm:g} {ly * mm:g} {lz * mm:g}) (0 {ly * mm:g} {lz * mm:g})")
-    substitute_re(bm, r"\(24 24 32\)", f"({nx} {ny} {nz})")
-    cd = f"{case}/system/controlDict"
-    substitute_re(cd, r"^endTime .*$", f"endTime         {end:.6g};")
-    substitute_re(cd, r"^deltaT .*$", f"deltaT          {dt:.6g};")
-    substitute_re(cd, r"^maxDeltaT .*$", f"maxDeltaT       {dt:.6g};")
-    substitute_re(cd, r"^writeInterval .*$", "writeInterval   100000;")
-    substitute_re(f"{case}/constant/transportProperties", r"^nu .*$",
-                  f"nu              {MU / RHO_F:.8g};   // mu/rho_f [m^2/s]")
+    substitute_re(bm, r"^// 4d x 4d x 5d", f"// {lxd}d x 4d x 5d")
+    side = f"{ly * mm:g}"
+    substitute_re(bm, rf"\(0 0 0\) \({side} 0 0\) \({side} {side} 0\)",
+                  f"(0 0 0) ({lx * mm:g} 0 0) ({lx * mm:g} {side} 0)")
+    substitute_re(bm, rf"\({side} 0 (\S+)\) \({side} {side} (\S+)\)",
+                  rf"({lx * mm:g} 0 \1) ({lx * mm:g} {side} \2)")
+    substitute_re(bm, rf"\({ny} {ny} (\d+)\)", rf"({nx} {ny} \1)")
     p = f"{case}/constant/immersedBodiesProperties"
-    substitute_re(p, r"^fluidDensity .*$", f"fluidDensity    {RHO_F:g};")
-    substitute_re(p, r"semiAxes .*$", f"semiAxes        ({a:g} {a:g} {a:g});")
-    substitute_re(p, r"centre .*$", f"centre          ({2 * D:g} {ly / 2:g} {a + 2 * D:.9g});")
+    substitute_re(p, r"centre          \(\S+ ", f"centre          ({2 * D:g} ")
     ut = u * math.tan(math.radians(angle))
-    substitute_re(p, r"velocity .*$", f"velocity        ({ut:.6g} 0 {-u:.6g});")
-    substitute_re(p, r"^    friction        0.1;$", f"    friction        {friction:g};")
-    return dict(dt=dt, cells=nx * ny * nz, U_release=u, end=end, Lx_d=lxd)
+    substitute_re(p, r"velocity        \(0 ", f"velocity        ({ut:.6g} ")
+    substitute_re(p, r"^    restitution     0.97;$",
+                  f"    restitution     0.97;\n    friction        {friction:g};")
+    return dict(info, cells=nx * ny * round(5 * cpd), Lx_d=lxd)
 
 
 def analyse(h5):
@@ -174,7 +165,7 @@ def tag_of(angle, cpd, friction):
 
 
 def run_one(angle, cpd, friction, force, quick):
-    out_csv = os.path.join(RESULTS, "quick.csv") if quick else RUNS_CSV
+    out_csv = os.path.join(HERE, "run-quick", "quick.csv") if quick else RUNS_CSV
     tag = tag_of(angle, cpd, friction)
     if not force and not quick and any(r["name"] == tag for r in read_csv(out_csv)):
         print(f"{tag}: in {os.path.relpath(out_csv, HERE)}, skipped")

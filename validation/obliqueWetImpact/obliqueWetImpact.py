@@ -182,7 +182,8 @@ def run_one(angle, cpd, friction, force, quick):
     cpu = cpu_seconds(case, "log.immersedSpheroidFoam")
     h5 = os.path.join(case, "postProcessing", "immersedBodies", "bodies.h5")
     r = analyse(h5)
-    row = dict(name=tag, angle=angle, cpd=cpd, friction=f"{friction:g}", cells=info["cells"],
+    row = dict(name=tag, angle=f"{angle:g}", cpd=cpd, friction=f"{friction:g}",
+               cells=info["cells"],
                dt=f"{info['dt']:.6g}", steps=len(r["t"]) - 1, Lx_d=info["Lx_d"],
                U_release=f"{info['U_release']:.5g}", wall_s=round(wall),
                cpu_s=round(cpu) if math.isfinite(cpu) else "", **provenance(), **measured(r))

@@ -339,7 +339,8 @@ def do_plot():
     for cpd, mu in groups:
         if cpd != max(c for c, _ in groups):
             continue
-        e_n = np.mean([f(r, "e_n") for r in rows if int(r["cpd"]) == cpd and f(r, "friction") == mu])
+        e_n = np.mean([f(r, "e_n") for r in rows
+                       if int(r["cpd"]) == cpd and f(r, "friction") == mu])
         ax.plot(x, (x - mu_eff_theory(x, mu, e_n, E_DRY) * (1 + e_n)) / e_n, "-", lw=1,
                 label=f"theory, mu {mu:g}, e_n {e_n:.2f}")
     ax.set_xlabel("tan(theta_in) = U_x/|U_z| before")

@@ -318,7 +318,9 @@ def do_plot():
     axes[0].axhline(0, color="gray", lw=0.5)
     axes[0].set_xlabel("Psi_in = v_t / |U_n| before the impact")
     axes[0].set_ylabel("Psi_out = v_t after / |U_n| before")
-    axes[0].set_title(f"Oblique impacts of a steel sphere in oil (St_n {min(f(r, 'St_n') for r in rows):.0f}-{max(f(r, 'St_n') for r in rows):.0f})")
+    st_n = [f(r, "St_n") for r in rows]
+    axes[0].set_title(f"Oblique impacts of a steel sphere in oil (St_n {min(st_n):.0f}-"
+                      f"{max(st_n):.0f})")
     axes[0].legend(fontsize=7)
     axes[1].set_xlabel("Psi_in")
     axes[1].set_ylabel("mu_eff / mu")

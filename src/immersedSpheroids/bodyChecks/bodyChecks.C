@@ -195,7 +195,12 @@ void Foam::immersedSpheroids::checkResolution
         const vector& s = body.semiAxes();
         const scalar dEq = 2*Foam::cbrt(s.x()*s.y()*s.z());
         const scalar cells = dEq/h;
-        if (cells < minCellsPerDiameter || 2*body.minSemiAxis() < h)
+        const scalar tolerance = 1 - cellsPerDiameterTolerance;
+        if
+        (
+            cells < tolerance*minCellsPerDiameter
+         || 2*body.minSemiAxis() < tolerance*h
+        )
         {
             FatalErrorInFunction
                 << "Body '" << body.name() << "' (semiAxes " << s
@@ -209,7 +214,7 @@ void Foam::immersedSpheroids::checkResolution
                 << " diameter are needed (" << warnCellsPerDiameter
                 << "-16 are validated)" << nl << exit(FatalError);
         }
-        if (cells < warnCellsPerDiameter)
+        if (cells < tolerance*warnCellsPerDiameter)
         {
             ++coarse;
             if (cells < fewest)

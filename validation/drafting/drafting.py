@@ -190,6 +190,9 @@ def surface_gap(axes, c1, r1, c2, r2, start=None):
         x0 = start
     res = minimize(f, x0, method="Nelder-Mead",
                    options=dict(xatol=1e-5, fatol=1e-16, maxiter=4000))
+    if not res.success:
+        raise RuntimeError(f"surface_gap: the minimisation over the surface angles did not "
+                           f"converge in {res.nit} iterations ({res.message}); centres {c1}, {c2}")
     return math.sqrt(res.fun), res.x
 
 

@@ -120,6 +120,8 @@ def analyse(h5):
     if len(touched) == 0:
         raise RuntimeError(f"{h5}: the sphere never reached the wall")
     i0 = touched[0]
+    if i0 == 0:
+        raise RuntimeError(f"{h5}: a collision force in the first row, no approach to measure")
     gap = z - a
     in_contact = np.flatnonzero(gap[i0:] < 0)
     left = i0 + (in_contact[-1] + 1 if len(in_contact) else 0)

@@ -356,10 +356,14 @@ TEST(DryCollision, ASustainedLoadIsCarriedWithinTheOverlapCap) {
   // sphere by g T_c^2/(pi^2 + ln^2 e) = 1.6 mm, 80 % of its radius. A drag
   // -c v (as a liquid's film gives) keeps it slow, so that the speed rule of
   // the first touch does not see an impact. Declared as the body's external
-  // force, the load stiffens the contact so that the sphere rests within the
-  // cap (0.1 a); undeclared, it sinks far past it
+  // force, the load stiffens the contact so that the sphere rests about half
+  // the cap (0.1 a) deep; undeclared, the sphere creeps in until the energy
+  // rule (the slow approach's kinetic energy against the overlap left) holds
+  // it at the cap
   const Scalar a = 2e-3, contactTime = 0.04, dt = 1e-4, drag = 1;  // drag dt/m = 0.38
   const Vec3 g(0, 0, -9.81);
+  const Scalar cap = 0.1 * a;
+  std::vector<Scalar> resting;
   for (const bool declared : {true, false}) {
     CollisionModel model = makeModel(contactOnly(0.9), {PlaneWall{"floor", Vec3::Zero(), Vec3::UnitZ()}});
     RigidBody b = sphere(a, Vec3(0, 0, a), Vec3::Zero());
@@ -374,26 +378,24 @@ TEST(DryCollision, ASustainedLoadIsCarriedWithinTheOverlapCap) {
       ASSERT_TRUE(b.centre.allFinite());
       deepest = std::max(deepest, a - b.centre.z());
     }
-    const Scalar cap = 0.1 * a;
-    const Scalar resting = a - b.centre.z();
-    if (declared) {
-      // half the cap for the load applied at once; while the body creeps in,
-      // the drag offsets part of its weight and the spring is stiffened
-      // gradually (dF = k d(delta) does not push it back out): within the cap
-      EXPECT_LE(resting, cap) << "the load is held within the cap";
-      EXPECT_GT(resting, 0);
-      EXPECT_LE(deepest, 1.01 * cap) << "the landing stays within the cap";
-      EXPECT_GT(model.statistics().stiffened, 0);
-    } else {
-      EXPECT_GT(resting, 2 * cap) << "without the load the spring of the contact time alone sinks it";
-    }
+    resting.push_back(a - b.centre.z());
+    EXPECT_GT(resting.back(), 0) << declared;
+    EXPECT_GT(model.statistics().stiffened, 0) << declared;
+    // while the body creeps in, the drag offsets part of its weight and the
+    // spring is stiffened gradually (dF = k d(delta) does not push it back out)
+    EXPECT_LE(deepest, 1.01 * cap) << declared << ": the landing stays within the cap";
   }
+  std::printf("resting overlap / cap: load declared %.3f, undeclared %.3f\n", resting[0] / cap,
+              resting[1] / cap);
+  EXPECT_LE(resting[0], 0.75 * cap) << "the declared load is held within the cap";
+  EXPECT_GT(resting[1], 0.95 * cap) << "undeclared, only the approach holds it, at the cap";
 }
 
 TEST(DryCollision, TheSustainedLoadOverlapSetsTheRestingOverlap) {
   // the sphere of the test above, its weight declared, with the static
   // overlap of a sustained load at 1/4, 1/2 and all of the cap: the stiffer
-  // the rule, the shallower it rests; within the cap at 1/4 and 1/2
+  // the rule, the shallower it rests; within the cap at each (at f = 1 the
+  // energy rule holds the creeping body, as the load rule alone does not)
   const Scalar a = 2e-3, contactTime = 0.04, dt = 1e-4, drag = 1;
   const Vec3 g(0, 0, -9.81);
   const Scalar cap = 0.1 * a;
@@ -416,9 +418,7 @@ TEST(DryCollision, TheSustainedLoadOverlapSetsTheRestingOverlap) {
     EXPECT_GT(resting.back(), 0) << fraction;
     // the spring is stiffened while the body creeps in (dF = k d(delta)):
     // the rest overlap exceeds the fraction of the cap that the rule aims at
-    if (fraction <= 0.5) {
-      EXPECT_LE(resting.back(), cap) << fraction;
-    }
+    EXPECT_LE(resting.back(), cap) << fraction;
   }
   std::printf("resting overlap / cap at 1/4, 1/2, 1: %.3f %.3f %.3f\n", resting[0] / cap,
               resting[1] / cap, resting[2] / cap);

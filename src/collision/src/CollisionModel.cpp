@@ -804,7 +804,16 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
       const Scalar load =
           sustainedLoad(bodies, i, j, n, known != contact_.end() ? c.force : Vec3::Zero(),
                         damping != lastDamping_.end() ? damping->second : Vec3::Zero());
-      const Scalar fn = model.contact().force(c, overlap, un, wInv, cap, load, statistics_.stiffened);
+      ContactLoading loading;
+      loading.overlap = overlap;
+      loading.normalSpeed = un;
+      loading.inverseMass = wInv;
+      loading.cap = cap;
+      loading.load = load;
+      // the contact time the sub-step resolves as the settings ask: a spring
+      // stiffened to it needs no more sub-steps in the next step
+      loading.shortestContactTime = settings_.subStepsPerContact * subDt;
+      const Scalar fn = model.contact().force(c, loading, statistics_.stiffened);
       Vec3 fContact = fn * n;
       model.friction().addForce(fn, n, relative, s1, s2, subDt, known != contact_.end() ? elapsed_ : 0,
                                 c, fContact);

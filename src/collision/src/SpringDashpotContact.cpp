@@ -21,45 +21,59 @@ ContactState SpringDashpotContact::firstTouch(Scalar contactTime, Scalar un, Sca
   return c;
 }
 
-Scalar SpringDashpotContact::force(ContactState& c, Scalar overlap, Scalar un, Scalar inverseMass,
-                                   Scalar cap, Scalar load, long& stiffened) const {
+Scalar SpringDashpotContact::force(ContactState& c, const ContactLoading& l,
+                                   long& stiffened) const {
   const Scalar e = restitution_;
+  const Scalar overlap = l.overlap, un = l.normalSpeed, cap = l.cap;
   SpringDashpot law;
   if (c.stiffness > 0) {
     // the spring-dashpot of the first touch (a fixed linear oscillator)
     law = springDashpotOfStiffness(c.stiffness, e, c.contactTime);
     c.springForce = std::max(Scalar(0), c.springForce + law.stiffness * (overlap - c.overlap));
   } else {
-    law = springDashpot(1 / inverseMass, e, c.contactTime);  // the first touch (or an old restart)
+    law = springDashpot(1 / l.inverseMass, e, c.contactTime);  // the first touch (or an old restart)
     c.springForce = law.stiffness * overlap;
   }
-  // still approaching faster than the contact time was made for (a body
-  // swinging into the contact): the first touch's rule at the new speed,
-  // for the overlap still allowed (at least half the cap); dF = k d(delta)
-  // keeps the stiffer spring from returning more work than it took
-  const Scalar left = std::max(cap - overlap, Scalar(0.5) * cap);
-  if (un < 0 && kPi * cap < -un * c.contactTime && kPi * left < -un * c.contactTime) {
-    const Scalar shorter = kPi * left / -un;
-    const Scalar ratio = c.contactTime / shorter;
-    law.stiffness *= ratio * ratio;
+  // stiffen to k (never softer): the contact time shrinks as 1/sqrt(k) and
+  // the dashpot grows as sqrt(k), so that the pair still rebounds with e;
+  // dF = k d(delta) keeps the stiffer spring from returning more work than it took
+  auto stiffenTo = [&](Scalar k) {
+    if (!(k > law.stiffness)) return;
+    const Scalar ratio = std::sqrt(k / law.stiffness);
+    law.stiffness = k;
     law.damping *= ratio;
-    c.contactTime = shorter;
+    c.contactTime /= ratio;
     ++stiffened;
+  };
+  // an approaching contact must take up the approach's kinetic energy and
+  // the load's work within the overlap still allowed D: F D + k D^2/2 >=
+  // m_eff u_n^2/2 + W D. An impact at the speed its spring was made for
+  // meets it (the oscillator of T_c <= pi cap/u_n keeps it while it closes)
+  // but for the overlap its first evaluation finds inside a sub-step, which
+  // a fast capped impact makes up here; a body that swings into the contact
+  // does not, nor does a contact loaded by another one's impact (a body
+  // stopped by a wall while the one behind it comes on): the spring is
+  // stiffened to meet it, at most as stiff as the sub-step resolves (the
+  // contact's oscillation with m_eff lasting the shortest contact time)
+  if (un < 0) {
+    const Scalar approachEnergy = 0.5 * un * un / l.inverseMass;
+    const Scalar left = cap - overlap;
+    const Scalar taken = left > 0 ? c.springForce * left + 0.5 * law.stiffness * left * left : 0;
+    if (approachEnergy + l.load * std::max(left, Scalar(0)) > taken) {
+      const Scalar lnE = std::log(e);
+      const Scalar resolved = (kPi * kPi + lnE * lnE) /
+                              (l.inverseMass * l.shortestContactTime * l.shortestContactTime);
+      const Scalar needed =
+          left > 0 ? 2 * (approachEnergy + (l.load - c.springForce) * left) / (left * left)
+                   : resolved;
+      stiffenTo(std::min(needed, resolved));
+    }
   }
   // a sustained load (gravity, the flow, bodies above): a spring made for an
   // impact's contact time can be far too soft to carry it. The spring is
   // stiffened so that the load overlaps it by at most the fraction f of the
   // cap: k >= W/(f cap); the spring of an impact without a load is left alone
-  if (load > 0) {
-    const Scalar needed = load / (sustainedLoadOverlap_ * cap);
-    if (needed > law.stiffness) {
-      const Scalar ratio = std::sqrt(needed / law.stiffness);
-      law.stiffness = needed;
-      law.damping *= ratio;
-      c.contactTime /= ratio;
-      ++stiffened;
-    }
-  }
+  if (l.load > 0) stiffenTo(l.load / (sustainedLoadOverlap_ * cap));
   c.stiffness = law.stiffness;
   c.overlap = overlap;
   return normalForce(c.springForce, un, law);

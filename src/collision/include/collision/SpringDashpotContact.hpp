@@ -6,9 +6,14 @@
  * At the first touch the contact time is the nominal T_c, shortened to
  * pi cap/u_n for a fast impact (the overlap stays below the cap); k_n and
  * eta_n follow from the effective mass and are kept for the whole contact,
- * the elastic force integrated incrementally (dF = k_n d(delta)). A body
- * still approaching faster than the contact time was made for gets the
- * first touch's rule at its new speed for the overlap still allowed, and a
+ * the elastic force integrated incrementally (dF = k_n d(delta)). A contact
+ * still approaching faster than its spring was made for (a body swinging
+ * into it, a body stopped by a wall or another contact while the one behind
+ * it comes on) is stiffened so that it takes up the approach's kinetic
+ * energy, and the work of the load, within the overlap still allowed: with
+ * F the spring force and D = cap - overlap, F D + k_n D^2/2 >= m_eff u_n^2/2
+ * + W D, k_n at most what the sub-step resolves
+ * (ContactLoading::shortestContactTime). A
  * sustained load W pressing the pair together stiffens the spring to
  * k_n >= W/(f cap) (the static overlap at most the fraction f of the cap,
  * ContactParameters::sustainedLoadOverlap, default 1/2).
@@ -40,6 +45,16 @@ struct ContactState {
   Vec3 tangentialSlip = Vec3::Zero();
 };
 
+/// What the contact's spring sees at one evaluation.
+struct ContactLoading {
+  Scalar overlap = 0;      ///< the overlap (>= 0)
+  Scalar normalSpeed = 0;  ///< u_n at the contact point (< 0: approaching)
+  Scalar inverseMass = 0;  ///< 1/m_eff along n of the pair (> 0)
+  Scalar cap = 0;                  ///< the largest overlap allowed
+  Scalar load = 0;                 ///< the sustained load pressing the pair together (N, >= 0)
+  Scalar shortestContactTime = 0;  ///< the shortest contact time the sub-step resolves (> 0)
+};
+
 class SpringDashpotContact {
  public:
   /// @throws std::invalid_argument if restitution or sustainedLoadOverlap is
@@ -55,17 +70,12 @@ class SpringDashpotContact {
   ContactState firstTouch(Scalar contactTime, Scalar un, Scalar cap) const;
 
   /**
-   * Advance the state c to the overlap and return the normal force on body 2
-   * along n (normalForce()); sets c's stiffness, overlap, spring force and
-   * contact time (not its force).
-   * @param un normal relative speed at the contact point
-   * @param inverseMass 1/m_eff along n (> 0)
-   * @param cap the largest overlap allowed
-   * @param load the sustained load pressing the pair together (N, >= 0)
+   * Advance the state c to the loading l and return the normal force on
+   * body 2 along n (normalForce()); sets c's stiffness, overlap, spring force
+   * and contact time (not its force).
    * @param stiffened incremented for each stiffening of the spring
    */
-  Scalar force(ContactState& c, Scalar overlap, Scalar un, Scalar inverseMass, Scalar cap,
-               Scalar load, long& stiffened) const;
+  Scalar force(ContactState& c, const ContactLoading& l, long& stiffened) const;
 
  private:
   Scalar restitution_;

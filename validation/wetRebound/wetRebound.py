@@ -141,6 +141,8 @@ def analyse(h5, name):
     if len(touched) == 0:
         raise RuntimeError(f"{name}: the sphere never reached the wall")
     i0 = touched[0]
+    if i0 == 0:
+        raise RuntimeError(f"{name}: a collision force in the first row, no approach to measure")
     u_in = -w[i0 - 1]
     gap = z - a
     # the largest rebound speed once the sphere has left the wall (gap >= 0

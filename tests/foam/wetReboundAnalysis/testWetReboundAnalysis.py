@@ -62,6 +62,20 @@ def write_h5(path):
         f["hydroForce"] = vec(np.zeros(n))
 
 
+def write_h5_from_the_touch(path):
+    """The bounce from its first row with a collision force: no approach to measure."""
+    t, gap, w, fc = trajectory()
+    k = int(np.flatnonzero(fc != 0)[0])
+    n = len(t) - k
+    vec = lambda z: np.stack([np.zeros(n), np.zeros(n), z[k:]], axis=1).reshape(n, 1, 3)  # noqa: E731
+    with h5py.File(path, "w") as f:
+        f["time"] = t[k:]
+        f["centre"] = vec(gap + A)
+        f["velocity"] = vec(w)
+        f["collisionForce"] = vec(fc)
+        f["hydroForce"] = vec(np.zeros(len(t)))
+
+
 def speed_out(h):
     """The exact leaving speed at the gap h (over the radius)."""
     return math.sqrt(U_OUT ** 2 - 2 * DECEL * h * A)
@@ -93,6 +107,16 @@ class WetReboundAnalysis(unittest.TestCase):
         for h, v in zip(gaps[:-1], values[:-1]):
             self.assertAlmostEqual(v, speed_out(h) / U_IN / wr.E_DRY, delta=1e-4, msg=f"h = {h} a")
         self.assertEqual(values[-1], 0.0, "a gap above the rebound's height gives zero")
+
+
+class WetReboundAnalysisWithoutApproach(unittest.TestCase):
+    def test_a_series_starting_in_the_film_stops(self):
+        # the approach speed is the sample before the first collision force: a series that
+        # starts with one must stop with an error, not read the last row
+        h5 = os.path.join(tempfile.mkdtemp(dir=os.environ.get("TMPDIR")), "fromTheTouch.h5")
+        write_h5_from_the_touch(h5)
+        with self.assertRaisesRegex(RuntimeError, "first row"):
+            wr.analyse(h5, NAME)
 
 
 if __name__ == "__main__":

@@ -24,7 +24,8 @@ backward, PISO with 2 correctors, limitedLinearV 1, adaptive dt with Courant 0.4
 
 Measures (all from the body time series, one row per fluid step), d the equal-volume diameter:
 - the surface gap: centre distance - d for spheres (negative in contact); for spheroids the
-  distance between the two surfaces (zero in contact), found numerically (surface_gap);
+  signed distance between the two surfaces (minus the penetration depth in contact), the
+  geometry core's certified dual method through ellipsoidDistance (surface_gaps);
 - kissing: the first time the gap falls below KISS_GAP d (interpolated between rows), and the
   first time the collision model acts on the pair (its lubrication onset, a few cells wide);
 - the collision speed: the largest downward speed of the trailing body up to the kissing time,
@@ -156,44 +157,39 @@ def vertical_extent(axes, rot):
     return np.sqrt(np.sum((np.asarray(axes) * rot[..., 2, :]) ** 2, axis=-1))
 
 
-def _surface(axes, u, v):
-    """Points of the ellipsoid surface in the body frame at the angles u (polar, about the body
-    x axis) and v (azimuth)."""
-    a, b, c = axes
-    return np.stack([a * np.cos(u), b * np.sin(u) * np.cos(v), c * np.sin(u) * np.sin(v)], -1)
+def distance_application():
+    """The geometry core's ellipsoidDistance application (built by ./Allwmake)."""
+    exe = os.path.join(os.environ.get("FOAM_USER_APPBIN", ""), "ellipsoidDistance")
+    if not os.access(exe, os.X_OK):
+        raise RuntimeError(f"drafting: {exe} not found; build the module (./Allwmake) and source "
+                           f"etc/bashrc (FOAM_USER_APPBIN)")
+    return exe
 
 
-def surface_gap(axes, c1, r1, c2, r2, start=None):
-    """The distance between the surfaces of two ellipsoids (semi-axes axes, centres c1, c2,
-    rotations r1, r2), 0 if they overlap; with the angles (u1, v1, u2, v2) of the nearest
-    points. A grid of 16 x 32 points on each surface gives the start (or `start`, the previous
-    row's answer, if that is closer), refined by minimising over the four angles."""
-    from scipy.optimize import minimize
-    # overlap test: a point of surface 2 inside ellipsoid 1 (on the same grid)
-    u = np.linspace(0, math.pi, 16)
-    v = np.linspace(0, 2 * math.pi, 32, endpoint=False)
-    uu, vv = [x.ravel() for x in np.meshgrid(u, v, indexing="ij")]
-    p1 = c1 + _surface(axes, uu, vv) @ r1.T
-    p2 = c2 + _surface(axes, uu, vv) @ r2.T
-    local = (p2 - c1) @ r1
-    if np.min(np.sum((local / np.asarray(axes)) ** 2, axis=1)) < 1.0:
-        return 0.0, None
-    dist = np.linalg.norm(p1[:, None, :] - p2[None, :, :], axis=2)
-    i, j = np.unravel_index(np.argmin(dist), dist.shape)
-    x0 = np.array([uu[i], vv[i], uu[j], vv[j]])
-
-    def f(x):
-        d = (c1 + _surface(axes, x[0], x[1]) @ r1.T) - (c2 + _surface(axes, x[2], x[3]) @ r2.T)
-        return float(d @ d)
-
-    if start is not None and f(start) < f(x0):
-        x0 = start
-    res = minimize(f, x0, method="Nelder-Mead",
-                   options=dict(xatol=1e-5, fatol=1e-16, maxiter=4000))
-    if not res.success:
-        raise RuntimeError(f"surface_gap: the minimisation over the surface angles did not "
-                           f"converge in {res.nit} iterations ({res.message}); centres {c1}, {c2}")
-    return math.sqrt(res.fun), res.x
+def surface_gaps(axes, c1, q1, c2, q2):
+    """The signed distance between the surfaces of two ellipsoids of semi-axes axes at each
+    row: centres c1, c2 (N, 3), unit quaternions q1, q2 (N, 4) = (w, x, y, z); minus the
+    penetration depth where they overlap. The geometry core's certified dual method, through
+    ellipsoidDistance (one call for all rows); a row it does not certify stops the analysis."""
+    import csv
+    import io
+    import subprocess
+    a = np.broadcast_to(np.asarray(axes, float), (len(c1), 3))
+    rows = np.hstack([a, c1, q1, a, c2, q2])
+    text = "a1,b1,c1,x1,y1,z1,qw1,qx1,qy1,qz1,a2,b2,c2,x2,y2,z2,qw2,qx2,qy2,qz2\n" + \
+        "".join(",".join(repr(float(x)) for x in row) + "\n" for row in rows)
+    done = subprocess.run([distance_application(), "-method", "dual", "-epsRel", "1e-9", "-"],
+                          input=text, capture_output=True, text=True)
+    if done.returncode != 0:
+        raise RuntimeError(f"drafting: ellipsoidDistance failed: {done.stderr.strip()}")
+    out = list(csv.DictReader(io.StringIO(done.stdout)))
+    if len(out) != len(rows):
+        raise RuntimeError(f"drafting: ellipsoidDistance gave {len(out)} rows for {len(rows)}")
+    bad = [r for r in out if r["status"] not in ("converged", "overlapping")]
+    if bad:
+        raise RuntimeError(f"drafting: ellipsoidDistance did not certify row {bad[0]['row']} "
+                           f"({bad[0]['status']})")
+    return np.array([float(r["distance"]) for r in out])
 
 
 # ---------------------------------------------------------------------------
@@ -241,11 +237,8 @@ def analyse(h5):
     if sphere:
         gap = (dist - 2 * axes[0]) / D
     else:
-        gap = np.empty(len(t))
-        prev = None
-        for k in range(len(t)):
-            gap[k], prev = surface_gap(axes, c[k, 0], rot[k, 0], c[k, 1], rot[k, 1], prev)
-            gap[k] /= D
+        q = s["orientation"]
+        gap = surface_gaps(axes, c[:, 0], q[:, 0], c[:, 1], q[:, 1]) / D
     # the window: both lowest points at least FLOOR_GAP d above the floor
     floor = c[:, :, 2] - vertical_extent(axes, rot)
     low = np.flatnonzero(np.min(floor, axis=1) < FLOOR_GAP * D)

@@ -3,8 +3,8 @@
 tests/foam/draftingAnalysis/run) on synthetic series with known answers: two spheres, the
 trailing one closing the gap at a constant rate until they touch, then rolling over the
 leading one until it is below it (kissing time, collision speed, pair force onset, tumbling
-time, the analysed window); the surface gap of two spheroids in configurations whose closest
-points are known; and the largest overlap read from a solver log."""
+time, the analysed window); the signed surface gap of two spheroids in configurations whose
+closest points are known; and the largest overlap read from a solver log."""
 import math
 import os
 import sys
@@ -112,30 +112,39 @@ class DraftingAnalysis(unittest.TestCase):
 
 
 class SurfaceGap(unittest.TestCase):
-    """Prolate spheroids (a = 2 b) with their closest points known."""
+    """Prolate spheroids (a = 2 b) with their closest points known, through the geometry
+    core's ellipsoidDistance."""
     b = R / 2 ** (1 / 3)
     a = 2 * b
     axes = (a, b, b)
-    eye = np.eye(3)
-    turned = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])  # axis along y
+    same = (1.0, 0.0, 0.0, 0.0)
+    turned = (math.cos(math.pi / 4), 0.0, 0.0, math.sin(math.pi / 4))  # axis along y
 
-    def gap(self, offset, r2):
-        g, _ = dr.surface_gap(self.axes, np.zeros(3), self.eye, np.asarray(offset, float), r2)
-        return g
+    def gap(self, offset, q2):
+        return dr.surface_gaps(self.axes, np.zeros((1, 3)), np.array([self.same]),
+                               np.array([offset], float), np.array([q2]))[0]
 
     def test_tip_to_tip(self):
-        self.assertAlmostEqual(self.gap((2 * self.a + 0.1 * D, 0, 0), self.eye), 0.1 * D, delta=1e-7 * D)
+        self.assertAlmostEqual(self.gap((2 * self.a + 0.1 * D, 0, 0), self.same), 0.1 * D,
+                               delta=1e-7 * D)
 
     def test_side_by_side(self):
-        self.assertAlmostEqual(self.gap((0, 2 * self.b + 0.05 * D, 0), self.eye), 0.05 * D,
+        self.assertAlmostEqual(self.gap((0, 2 * self.b + 0.05 * D, 0), self.same), 0.05 * D,
                                delta=1e-7 * D)
 
     def test_tip_to_side(self):
-        self.assertAlmostEqual(self.gap((self.a + self.b + 0.02 * D, 0, 0), self.turned), 0.02 * D,
+        self.assertAlmostEqual(self.gap((self.a + self.b + 0.02 * D, 0, 0), self.turned),
+                               0.02 * D, delta=1e-7 * D)
+
+    def test_overlapping_bodies_give_minus_the_penetration_depth(self):
+        self.assertAlmostEqual(self.gap((2 * self.a - 0.2 * D, 0, 0), self.same), -0.2 * D,
                                delta=1e-7 * D)
 
-    def test_overlapping_bodies_give_zero(self):
-        self.assertEqual(self.gap((2 * self.a - 0.2 * D, 0, 0), self.eye), 0.0)
+    def test_every_row_in_one_call(self):
+        offsets = np.array([[2 * self.a + h * D, 0, 0] for h in (0.3, 0.1, -0.05)])
+        gaps = dr.surface_gaps(self.axes, np.zeros((3, 3)), np.tile(self.same, (3, 1)), offsets,
+                               np.tile(self.same, (3, 1)))
+        np.testing.assert_allclose(gaps, [0.3 * D, 0.1 * D, -0.05 * D], atol=1e-7 * D)
 
 
 class LogMaxOverlap(unittest.TestCase):

@@ -6,14 +6,13 @@
  * At the first touch the contact time is the nominal T_c, shortened to
  * pi cap/u_n for a fast impact (the overlap stays below the cap); k_n and
  * eta_n follow from the effective mass and are kept for the whole contact,
- * the elastic force integrated incrementally (dF = k_n d(delta)). A contact
- * still approaching faster than its spring was made for (a body swinging
- * into it, a body stopped by a wall or another contact while the one behind
- * it comes on) is stiffened so that it takes up the approach's kinetic
- * energy, and the work of the load, within the overlap still allowed: with
- * F the spring force and D = cap - overlap, F D + k_n D^2/2 >= m_eff u_n^2/2
- * + W D, k_n at most what the sub-step resolves
- * (ContactLoading::shortestContactTime). A
+ * the elastic force integrated incrementally (dF = k_n d(delta)). While the
+ * bodies approach, the spring must take up the approach's kinetic energy and
+ * the load's work within the overlap still allowed D = cap - overlap:
+ * F D + k_n D^2/2 >= m_eff u_n^2/2 + W D (F the spring force); where it
+ * cannot (a body swinging into the contact, the trailing body of a stacked
+ * pair whose leading one a wall stops) it is stiffened to meet it, at most
+ * to the contact time ContactLoading::shortestContactTime. A
  * sustained load W pressing the pair together stiffens the spring to
  * k_n >= W/(f cap) (the static overlap at most the fraction f of the cap,
  * ContactParameters::sustainedLoadOverlap, default 1/2).

@@ -428,6 +428,7 @@ def do_plot():
                           ("reynolds_collision", "Re_collision"), ("analysed_up_to_s", "window_end"),
                           ("separation_at_window_end_over_d", "separation_end_d"),
                           ("max_overlap_in_window_over_a", "max_overlap_window"),
+                          ("max_overlap_whole_run_over_a", "max_overlap_run"),
                           ("wall_s", "wall_s"), ("cpu_s", "cpu_s")):
             # null where the event did not happen within the analysed window
             metrics[f"{key}_{name}"] = num(r[col])

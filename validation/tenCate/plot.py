@@ -110,6 +110,8 @@ def main():
         t, z, w = t[keep], z[keep], w[keep]
         umax = -w.min()
         uref = REFERENCE[name][0]
+        # the digitised velocity curve's own largest speed, beside the table value uref
+        ucurve = float(-u_ref[:, 1].min())
         # velocity error over the data's time range (interpolated to the data's times)
         inside = u_ref[:, 0] <= t[-1]
         u_sim = np.interp(u_ref[inside, 0], t, w)
@@ -147,6 +149,7 @@ def main():
                          ranks=info.get("ranks", ""),
                          steps=info.get("steps", ""), wallSeconds=info.get("wallSeconds", ""),
                          umax=umax, umaxRef=uref, umaxError=(umax - uref) / uref,
+                         umaxCurve=ucurve, umaxErrorVsCurve=(umax - ucurve) / ucurve,
                          rmsUError=rms_u, maxGapError=max_gap, endTime=t[-1],
                          rmsUErrorApproach=rms_u_far, maxGapErrorApproach=max_gap_far,
                          startOffset=start_offset, maxGapErrorApproachShifted=max_gap_far_shifted,
@@ -214,6 +217,8 @@ def main():
     for r in rows:
         key = f"{r['case']}_{r['cpd']}" + ("" if not r["variant"] else f"_{r['variant'].replace('-', '_')}")
         metrics[f"{key}_umax_error_pct"] = round(100 * r["umaxError"], 4)
+        metrics[f"{key}_umax_error_vs_data_curve_max_pct"] = round(100 * r["umaxErrorVsCurve"], 4)
+        metrics[f"{r['case']}_data_curve_umax_m_s"] = round(r["umaxCurve"], 6)
         metrics[f"{key}_rms_u_error_pct"] = round(100 * r["rmsUError"], 4)
         metrics[f"{key}_max_gap_error_d"] = round(float(r["maxGapError"]), 5)
         metrics[f"{key}_rms_u_error_pct_approach"] = round(100 * r["rmsUErrorApproach"], 4)

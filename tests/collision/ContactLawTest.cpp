@@ -120,6 +120,8 @@ TEST(ContactLaw, OutOfRangeSettingsNameTheKeywordAndTheRangeOfTheConstants) {
        CollisionSettings::kDistanceAccuracyRange},
       {"maxSubSteps", [](ModelSetup& s) { s.settings.maxSubSteps = 0; },
        CollisionSettings::kMaxSubStepsRange},
+      {"approachContactTimeScale", [](ModelSetup& s) { s.settings.approachContactTimeScale = 8; },
+       CollisionSettings::kApproachContactTimeScaleRange},
       {"saturation", [](ModelSetup& s) { s.laws.lubrication.saturation = 1; },
        LubricationParameters::kSaturationRange},
       {"pairActivation", [](ModelSetup& s) { s.laws.lubrication.pairActivation = 2; },

@@ -51,6 +51,9 @@ void CollisionSettings::validate() const {
           outOfRangeMessage("distanceAccuracy", distanceAccuracy, kDistanceAccuracyRange));
   require(kMaxSubStepsRange.contains(maxSubSteps),
           outOfRangeMessage("maxSubSteps", maxSubSteps, kMaxSubStepsRange));
+  require(kApproachContactTimeScaleRange.contains(approachContactTimeScale),
+          outOfRangeMessage("approachContactTimeScale", approachContactTimeScale,
+                            kApproachContactTimeScaleRange));
   const std::vector<std::string>& names = distanceMethods();
   if (std::find(names.begin(), names.end(), distanceMethod) == names.end()) {
     std::string allowed;
@@ -812,7 +815,8 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
       loading.load = load;
       // the contact time the sub-step resolves as the settings ask: a spring
       // stiffened to it needs no more sub-steps in the next step
-      loading.shortestContactTime = settings_.subStepsPerContact * subDt;
+      loading.shortestContactTime =
+          settings_.approachContactTimeScale * settings_.subStepsPerContact * subDt;
       const Scalar fn = model.contact().force(c, loading, statistics_.stiffened);
       Vec3 fContact = fn * n;
       model.friction().addForce(fn, n, relative, s1, s2, subDt, known != contact_.end() ? elapsed_ : 0,

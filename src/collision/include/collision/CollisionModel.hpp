@@ -38,6 +38,7 @@
  * | subStepsPerContact | body sub-steps per contact time               | 10      | [4, 10000] |
  * | distanceAccuracy   | eps_d / smallest Gaussian curvature radius    | 1e-5    | [1e-12, 0.1] |
  * | maxSubSteps        | bound on the sub-steps subSteps() may ask for | 100000  | [1, 1e9] |
+ * | approachContactTimeScale | shortest stiffened contact time / subStepsPerContact sub-steps | 1 | [0.25, 4] |
  * | distanceMethod     | distance method of step 3 (distanceMethods()) | dual    | dual, paper, auto, gjk, movingBalls |
  *
  * See also: PairModel, WallModel, FilmCorrection, SubStepper.
@@ -82,6 +83,16 @@ struct CollisionSettings {
   /// largest number of sub-steps subSteps() may ask for, an integer in kMaxSubStepsRange
   int maxSubSteps = 100000;
   static constexpr Range kMaxSubStepsRange{1, 1e9};
+  /// the shortest contact time the approach check (SpringDashpotContact) may
+  /// stiffen a spring to, in units of subStepsPerContact sub-steps of the
+  /// current sub-step, in kApproachContactTimeScaleRange. 1: a stiffened
+  /// contact keeps the resolution the settings ask for, so it needs no more
+  /// sub-steps in the next step. A setting for sensitivity studies
+  /// (validation/dryCollisions): below 1 the stiffened contacts are
+  /// under-resolved and raise the next step's sub-steps, which can stiffen
+  /// them again; above 1 the check stiffens less and the cap holds less
+  Scalar approachContactTimeScale = 1;
+  static constexpr Range kApproachContactTimeScaleRange{0.25, 4};
   /// the distance method of each pair, one of distanceMethods(): dual (signed),
   /// paper (the founding paper's: Moving Balls for 1/3 < Ar < 3, GJK otherwise),
   /// auto, or a single method that can serve (certified stop): gjk, movingBalls

@@ -3,7 +3,10 @@
 // RigidBodyStep, the ones coupled runs use), measured against the input restitution and
 // the conservation laws, and pushed to the extremes (README.md).
 //
-//   dryCollisions [--quick] [--out DIR] [--only PART]
+//   dryCollisions [--quick] [--out DIR] [--only PART] [--approach-scale F]
+//
+// --approach-scale F: CollisionSettings::approachContactTimeScale of every run
+// (default 1), for the sensitivity to the approach check's bound.
 //
 // Units: the equal-volume diameter D_eq = 1, the nominal contact time T_c = 1,
 // density 1. Fluid steps dt = T_c/5 (N_c = 5), each split into the sub-steps
@@ -17,6 +20,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <exception>
 #include <fstream>
 #include <iomanip>
@@ -265,6 +269,10 @@ bool advance(std::vector<RigidBody>& bodies, CollisionModel& model, Scalar tMax,
   return false;
 }
 
+/// CollisionSettings::approachContactTimeScale of every run (--approach-scale,
+/// the sensitivity of the results to the approach check's bound)
+Scalar approachContactTimeScale = CollisionSettings().approachContactTimeScale;
+
 /// The numerical settings and the laws' parameters of a dry run (model springDashpot).
 struct DrySettings {
   CollisionSettings settings;
@@ -277,6 +285,7 @@ DrySettings contactSettings(Scalar e, int n, Scalar friction = 0) {
   s.laws.contact.friction = friction;
   s.settings.subStepsPerContact = n;
   s.settings.maxOverlap = kMaxOverlap;
+  s.settings.approachContactTimeScale = approachContactTimeScale;
   return s;
 }
 
@@ -1058,8 +1067,16 @@ int main(int argc, char** argv) {
       o.out = argv[++i];
     } else if (arg == "--only" && i + 1 < argc) {
       o.only = argv[++i];
+    } else if (arg == "--approach-scale" && i + 1 < argc) {
+      approachContactTimeScale = std::strtod(argv[++i], nullptr);
+      const Range& r = CollisionSettings::kApproachContactTimeScaleRange;
+      if (!r.contains(approachContactTimeScale)) {
+        std::cerr << "dryCollisions: --approach-scale " << argv[i] << " must be in " << r.str()
+                  << "\n";
+        return 2;
+      }
     } else {
-      std::cerr << "usage: dryCollisions [--quick] [--out DIR] [--only PART]\n"
+      std::cerr << "usage: dryCollisions [--quick] [--out DIR] [--only PART] [--approach-scale F]\n"
                    "  PART: 1 sphere-sphere, 2 sphere-wall, 3 spheroid-wall, 4 spheroid pairs,\n"
                    "        5 cap sweep and extremes, 6 oblique sphere-wall\n";
       return 2;
@@ -1101,7 +1118,11 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::ostringstream report;
-  report << "# dryCollisions checks" << (o.quick ? " (--quick)" : "") << "\n\n";
+  report << "# dryCollisions checks" << (o.quick ? " (--quick)" : "");
+  if (approachContactTimeScale != CollisionSettings().approachContactTimeScale) {
+    report << " (approachContactTimeScale " << approachContactTimeScale << ")";
+  }
+  report << "\n\n";
   checks.report(report);
   report << "\nWall time " << std::fixed << std::setprecision(1) << elapsed() << " s\n"
          << timing.str();

@@ -12,7 +12,6 @@ import os
 import re
 import statistics
 import sys
-from collections import defaultdict
 from pathlib import Path
 
 import matplotlib
@@ -364,16 +363,16 @@ out.append("Between the regimes the spring model passes smoothly from sticking t
            "elastic theory), where the rigid-body theory has a corner: the largest differences from "
            "the theory are there.\n")
 
-with open(os.path.join(RESULTS, "table.md"), "w") as f:
-    f.write("\n".join(out) + "\n")
-
-
 def check_metrics(path):
     """Flat metrics from checks.md (written by dryCollisions): checks, checks_failed and
-    worst_<check> for each check (its worst value over the cases it covers)."""
+    worst_<check> for each check (its worst value over the cases it covers), and
+    extremes_distance_queries (the distance queries of the extremes)."""
     metrics = {"checks": 0, "checks_failed": 0}
     with open(path) as f:
         for line in f:
+            queries = re.match(r"- 5 extremes: .* in (\d+) queries", line)
+            if queries:
+                metrics["extremes_distance_queries"] = int(queries.group(1))
             if not re.match(r"\| \d", line):
                 continue
             cells = [c.strip().replace("\\|", "|")
@@ -387,8 +386,54 @@ def check_metrics(path):
     return metrics
 
 
+def failed_checks(path):
+    """The names of the checks of checks.md with failed cases."""
+    names = []
+    with open(path) as f:
+        for line in f:
+            if re.match(r"\| \d", line):
+                cells = [c.strip() for c in line.strip().strip("|").split(" | ")]
+                if int(cells[5]) > 0:
+                    names.append(cells[0].replace("\\|", "|"))
+    return names
+
+
+metrics = check_metrics(os.path.join(RESULTS, "checks.md"))
+
+# the approach check's bound (Allrun -approach-scale F): the figures it moves
+APPROACH_KEYS = [
+    ("worst_5_extremes_max_overlap_a_min_model", "extremes: max overlap / a_min"),
+    ("worst_3_spheroid_wall_max_overlap_a_min", "spheroid-wall: max overlap / a_min"),
+    ("worst_5_cap_sweep_spheres_e_meas_e_n_10", "cap sweep: max abs(e_meas - e)"),
+    ("extremes_distance_queries", "extremes: distance queries"),
+    ("checks_failed", "checks failed"),
+]
+variants = {1.0: (metrics, failed_checks(os.path.join(RESULTS, "checks.md")))}
+for d in Path(RESULTS).glob("approachScale-*"):
+    if (d / "checks.md").is_file():
+        scale = float(d.name.split("-", 1)[1])
+        variants[scale] = (check_metrics(d / "checks.md"), failed_checks(d / "checks.md"))
+if len(variants) > 1:
+    out.append("## The approach check's bound\n")
+    out.append("The full set with `CollisionSettings::approachContactTimeScale` (the shortest contact "
+               "time the approach check stiffens a spring to, in subStepsPerContact sub-steps; "
+               "default 1) halved and doubled: `Allrun -approach-scale F`, checks in "
+               "`results/approachScale-F/checks.md`.\n")
+    table(["approachContactTimeScale"] + [label for _, label in APPROACH_KEYS] + ["failed checks"],
+          [[f"{scale:g}"] + [f"{m[k]:g}" if k in m else "-" for k, _ in APPROACH_KEYS]
+           + ["; ".join(n.replace("|", "\\|") for n in failed) or "-"] for scale, (m, failed) in sorted(variants.items())])
+    for scale, (m, _) in variants.items():
+        if scale == 1.0:
+            continue
+        for k, _ in APPROACH_KEYS:
+            if k in m:
+                metrics[f"approach_scale_{scale:g}_{k}"] = m[k]
+
+with open(os.path.join(RESULTS, "table.md"), "w") as f:
+    f.write("\n".join(out) + "\n")
+
 with open(os.path.join(RESULTS, "metrics.json"), "w") as f:
-    json.dump(check_metrics(os.path.join(RESULTS, "checks.md")), f, indent=1, sort_keys=True)
+    json.dump(metrics, f, indent=1, sort_keys=True)
     f.write("\n")
 print("wrote", ", ".join(os.path.join(RESULTS, x) for x in
                          ("restitution.png", "spheroidWall.png", "extremes.png", "obliqueSphereWall.png", "table.md",

@@ -1,9 +1,12 @@
-// The logarithmic tangential lubrication terms (TangentialLubrication.hpp):
-// the ln(a/h) coefficients of Goldman, Cox and Brenner (1967) for a sphere and
-// a plane and of Jeffrey and Onishi (1984) for two spheres, no load under a
-// rigid motion of the pair, one symmetric dissipative resistance matrix, and
-// the terms as CollisionModel applies them to a sphere sliding over a wall.
+// The logarithmic tangential lubrication terms (TangentialLubrication.hpp),
+// from the gap's paraboloid: the ln(a/h) coefficients of Goldman, Cox and
+// Brenner (1967) for a sphere and a plane and of Jeffrey and Onishi (1984)
+// for two spheres; for spheroids in any orientation no load under a rigid
+// motion of the pair, the same loads with the bodies' labels exchanged, one
+// symmetric dissipative resistance matrix; and the terms as CollisionModel
+// applies them to a sphere sliding over a wall and to two spheroids.
 #include "collision/LubricationLaw.hpp"
+#include "ellipsoids/Ellipsoid.hpp"
 #include "collision/RigidBody.hpp"
 #include "collision/TangentialLubrication.hpp"
 #include "ModelSetup.hpp"
@@ -23,21 +26,46 @@ namespace {
 constexpr Scalar kInf = std::numeric_limits<Scalar>::infinity();
 constexpr Scalar mu = 0.01, L = 2.5;
 
-/// The 12 x 12 resistance matrix R: (F1, T1, F2, T2) = R (U1, Omega1, U2, Omega2).
 /// The 12 x 12 resistance matrix R (row-major): (F1, T1, F2, T2) = R (U1, Omega1, U2, Omega2).
 /// Plain arrays: the product q.R q is all the tests need.
 using Mat12 = std::array<std::array<Scalar, 12>, 12>;
 
-Mat12 resistance(const TangentialLubrication& law, const Vec3& d) {
+Mat12 resistance(const TangentialLubrication& law, const Vec3& arm1, const Vec3& arm2) {
   Mat12 R{};
   for (int k = 0; k < 12; ++k) {
     Vec3 motion[4] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
     motion[k / 3](k % 3) = 1;
-    const TangentialLubricationLoads l = law.loads(L, d, motion[0], motion[1], motion[2], motion[3]);
+    const TangentialLubricationLoads l =
+        law.loads(L, {arm1, motion[0], motion[1]}, {arm2, motion[2], motion[3]});
     const Vec3 loads[4] = {l.force1, l.torque1, -l.force1, l.torque2};
     for (int row = 0; row < 12; ++row) R[row][k] = loads[row / 3](row % 3);
   }
   return R;
+}
+
+/// The loads on spheres of radii a1, a2 (a2 infinite: a plane at rest) with
+/// the unit normal d from 1 to 2, for the motions of their centres.
+TangentialLubricationLoads sphereLoads(Scalar a1, Scalar a2, const Vec3& d, Scalar logFactor,
+                                       const Vec3& u1, const Vec3& omega1, const Vec3& u2,
+                                       const Vec3& omega2) {
+  const TangentialLubrication law = TangentialLubrication::spheres(a1, a2, d, mu);
+  const FilmSide second = std::isfinite(a2) ? FilmSide{-a2 * d, u2, omega2} : FilmSide{};
+  return law.loads(logFactor, {a1 * d, u1, omega1}, second);
+}
+
+/// A spheroid (semi-axes a, b, b along the unit axis e) touching the point
+/// `contact` with its outward normal there along m: its curvature tensor at
+/// that point and the arm from its centre to it.
+struct Touching {
+  Mat3 curvature;
+  Vec3 arm;
+};
+Touching spheroidAt(Scalar a, Scalar b, const Vec3& e, const Vec3& m) {
+  const Quat q = Quat::FromTwoVectors(Vec3::UnitX(), e);
+  // the support point of the centred spheroid in the direction m
+  const ellipsoids::Ellipsoid centred(Vec3(a, b, b), Vec3::Zero(), q);
+  const Vec3 point = centred.support(m);
+  return {centred.curvatureTensor(point), point};
 }
 
 Scalar largestEntry(const Mat12& R) {
@@ -47,28 +75,52 @@ Scalar largestEntry(const Mat12& R) {
   return m;
 }
 
+/// Two prolate spheroids (Ar 2.5 and 1.5) touching at the origin with the
+/// normal d from the first to the second, their axes along e1, e2 (the
+/// configurations of the invariance tests).
+struct SpheroidPair {
+  Touching first, second;
+  Vec3 d;
+};
+SpheroidPair spheroidPair(const Vec3& d, const Vec3& e1, const Vec3& e2) {
+  return {spheroidAt(2.5e-3, 1e-3, e1.normalized(), d), spheroidAt(1.2e-3, 0.8e-3, e2.normalized(), -d),
+          d};
+}
+const SpheroidPair kPairs[] = {
+    spheroidPair(Vec3(0.3, -0.5, 0.8).normalized(), Vec3(1, 0.2, 0), Vec3(0, 1, 0.4)),
+    spheroidPair(Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(0, 1, 0)),   // crossed, side by side
+    spheroidPair(Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(1, 0, 0)),   // parallel
+    spheroidPair(Vec3(1, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 1)),   // tip on side
+};
+
+TangentialLubrication lawOf(const SpheroidPair& p) {
+  return TangentialLubrication(p.first.curvature, p.second.curvature, p.d, mu);
+}
+
 }  // namespace
 
 TEST(TangentialLubrication, SphereAndPlaneGiveGoldmanCoxBrenner) {
   // sphere of radius a above a floor (d = -z, from the sphere to the plane)
   const Scalar a = 2e-3;
-  const TangentialLubrication law(a, kInf, mu);
   const Vec3 d(0, 0, -1);
+  auto load = [&](Scalar logFactor, const Vec3& u, const Vec3& omega) {
+    return sphereLoads(a, kInf, d, logFactor, u, omega, Vec3::Zero(), Vec3::Zero());
+  };
   const Scalar f0 = 6 * kPi * mu * a * L, t0 = 8 * kPi * mu * a * a * L;
   // translation U along x: drag (8/15) ln(a/h), torque (1/10) ln(a/h) in the rolling sense (+y)
-  TangentialLubricationLoads l = law.loads(L, d, Vec3(1, 0, 0), Vec3::Zero(), Vec3::Zero(), Vec3::Zero());
+  TangentialLubricationLoads l = load(L, Vec3(1, 0, 0), Vec3::Zero());
   EXPECT_NEAR(l.force1.x(), -f0 * 8 / 15, 1e-15);
   EXPECT_NEAR(l.torque1.y(), t0 / 10, 1e-15);
   EXPECT_NEAR(l.force1.y() + l.force1.z() + l.torque1.x() + l.torque1.z(), 0, 1e-18);
   // rotation Omega about y (bottom surface moving along -x): force (2/15) a ln(a/h)
   // along +x, torque -(2/5) a ln(a/h) against the rotation
-  l = law.loads(L, d, Vec3::Zero(), Vec3(0, 1, 0), Vec3::Zero(), Vec3::Zero());
+  l = load(L, Vec3::Zero(), Vec3(0, 1, 0));
   EXPECT_NEAR(l.force1.x(), f0 * a * 2 / 15, 1e-18);
   EXPECT_NEAR(l.torque1.y(), -t0 * a * 2 / 5, 1e-18);
   // rotation about the normal, motion along the normal: no logarithmic term
-  l = law.loads(L, d, Vec3(0, 0, 1), Vec3(0, 0, 1), Vec3::Zero(), Vec3::Zero());
-  EXPECT_EQ(l.force1.norm() + l.torque1.norm(), 0);
-  EXPECT_EQ(law.loads(0, d, Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3::Zero(), Vec3::Zero()).force1.norm(), 0);
+  l = load(L, Vec3(0, 0, 1), Vec3(0, 0, 1));
+  EXPECT_LT(l.force1.norm() + l.torque1.norm(), 1e-15 * f0);
+  EXPECT_EQ(load(0, Vec3(1, 0, 0), Vec3(0, 1, 0)).force1.norm(), 0);
 }
 
 TEST(TangentialLubrication, TwoSpheresGiveJeffreyOnishi) {
@@ -78,58 +130,87 @@ TEST(TangentialLubrication, TwoSpheresGiveJeffreyOnishi) {
   const Vec3 d(1, 0, 0);
   for (const Scalar beta : {0.3, 1.0, 2.0, 5.0}) {
     const Scalar a1 = 1e-3, a2 = beta * a1, b1 = 1 + beta;
-    const TangentialLubrication law(a1, a2, mu);
+    auto load = [&](const Vec3& u1, const Vec3& omega1, const Vec3& omega2) {
+      return sphereLoads(a1, a2, d, L, u1, omega1, Vec3::Zero(), omega2);
+    };
     const Scalar YA = 4.0 / 15 * beta * (2 + beta + 2 * beta * beta) / (b1 * b1 * b1);
     const Scalar YB = -1.0 / 5 * beta * (4 + beta) / (b1 * b1);
     const Scalar YC11 = 2.0 / 5 * beta / b1, YC12 = beta * beta / (10 * b1);
     const Scalar f0 = 6 * kPi * mu * a1 * L, t0 = 8 * kPi * mu * a1 * a1 * L;
-    TangentialLubricationLoads l = law.loads(L, d, Vec3(0, 1, 0), Vec3::Zero(), Vec3::Zero(), Vec3::Zero());
+    TangentialLubricationLoads l = load(Vec3(0, 1, 0), Vec3::Zero(), Vec3::Zero());
     EXPECT_NEAR(l.force1.y(), -f0 * YA, 1e-15 * f0) << beta;
     EXPECT_NEAR(l.torque1.z(), t0 * YB / 2, 1e-15 * t0) << "d x u = +z: T1 = -t0 E z" << beta;
-    l = law.loads(L, d, Vec3::Zero(), Vec3(0, 0, 1), Vec3::Zero(), Vec3::Zero());
+    l = load(Vec3::Zero(), Vec3(0, 0, 1), Vec3::Zero());
     EXPECT_NEAR(l.torque1.z(), -t0 * a1 * YC11, 1e-15 * t0 * a1) << beta;
     EXPECT_NEAR(l.force1.y(), f0 * a1 * YB * 2 / 3, 1e-15 * f0 * a1) << "Omega1 x d = +y" << beta;
-    l = law.loads(L, d, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3(0, 0, 1));
+    l = load(Vec3::Zero(), Vec3::Zero(), Vec3(0, 0, 1));
     EXPECT_NEAR(l.torque1.z(), -t0 * a1 * YC12, 1e-15 * t0 * a1) << beta;
     EXPECT_NEAR(l.force1.y(), -f0 * a1 * 2 * beta * beta * (1 + 4 * beta) / (15 * b1 * b1),
                 1e-15 * f0 * a1)
         << beta;
   }
   // equal spheres: Y^A_11 = (1/6) ln(1/xi)
-  const TangentialLubrication equal(1, 1, 1);
-  EXPECT_NEAR(equal.loads(1, d, Vec3(0, 0, 1), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()).force1.z(),
+  const TangentialLubrication equal = TangentialLubrication::spheres(1, 1, d, 1);
+  EXPECT_NEAR(equal.loads(1, {d, Vec3(0, 0, 1), Vec3::Zero()}, {-d, Vec3::Zero(), Vec3::Zero()})
+                  .force1.z(),
               -kPi, 1e-14);
 }
+
 
 TEST(TangentialLubrication, NoLoadUnderARigidMotionOfThePair) {
   // the pair translating and rotating as one rigid body about any point
   std::mt19937 rng(3);
   std::uniform_real_distribution<Scalar> u(-1, 1);
-  const Vec3 d = Vec3(0.3, -0.5, 0.8).normalized();
-  const Scalar a1 = 1.5e-3, a2 = 0.7e-3;
-  const TangentialLubrication law(a1, a2, mu);
-  const Vec3 contact(0.2, 0.1, -0.3);
-  const Vec3 c1 = contact - a1 * d, c2 = contact + a2 * d;
-  for (int k = 0; k < 5; ++k) {
-    const Vec3 V(u(rng), u(rng), u(rng)), W(u(rng), u(rng), u(rng)), x0(u(rng), u(rng), u(rng));
-    const TangentialLubricationLoads l =
-        law.loads(L, d, V + W.cross(c1 - x0), W, V + W.cross(c2 - x0), W);
-    const Scalar scale = 6 * kPi * mu * a1 * L * (V.norm() + W.norm());
-    EXPECT_LT(l.force1.norm(), 1e-13 * scale);
-    EXPECT_LT(l.torque1.norm(), 1e-13 * scale);
-    EXPECT_LT(l.torque2.norm(), 1e-13 * scale);
+  for (const SpheroidPair& p : kPairs) {
+    const TangentialLubrication law = lawOf(p);
+    const Vec3 c1 = -p.first.arm, c2 = -p.second.arm;  // the contact at the origin
+    for (int k = 0; k < 5; ++k) {
+      const Vec3 V(u(rng), u(rng), u(rng)), W(u(rng), u(rng), u(rng)), x0(u(rng), u(rng), u(rng));
+      const TangentialLubricationLoads l = law.loads(L, {p.first.arm, V + W.cross(c1 - x0), W},
+                                                     {p.second.arm, V + W.cross(c2 - x0), W});
+      const Scalar scale = 6 * kPi * mu * 1e-3 * L * (V.norm() + W.norm());
+      EXPECT_LT(l.force1.norm(), 1e-13 * scale);
+      EXPECT_LT(l.torque1.norm(), 1e-13 * scale);
+      EXPECT_LT(l.torque2.norm(), 1e-13 * scale);
+    }
+  }
+}
+
+TEST(TangentialLubrication, ExchangingTheBodiesGivesTheSameLoads) {
+  std::mt19937 rng(5);
+  std::normal_distribution<Scalar> normal;
+  auto random = [&]() { return Vec3(normal(rng), normal(rng), normal(rng)); };
+  for (const SpheroidPair& p : kPairs) {
+    const TangentialLubrication law = lawOf(p);
+    const TangentialLubrication exchanged(p.second.curvature, p.first.curvature, -p.d, mu);
+    const FilmSide one{p.first.arm, random(), random()}, two{p.second.arm, random(), random()};
+    const TangentialLubricationLoads a = law.loads(L, one, two), b = exchanged.loads(L, two, one);
+    const Scalar scale = a.force1.norm() + a.torque1.norm() / 1e-3;
+    ASSERT_GT(scale, 0);
+    EXPECT_LT((a.force1 + b.force1).norm(), 1e-13 * scale);
+    EXPECT_LT((a.torque1 - b.torque2).norm(), 1e-16 * scale);
+    EXPECT_LT((a.torque2 - b.torque1).norm(), 1e-16 * scale);
   }
 }
 
 TEST(TangentialLubrication, OneSymmetricDissipativeResistance) {
+  // spheres of three radius ratios and the spheroid pairs: the force-rotation
+  // and torque-translation terms of one symmetric matrix (reciprocity), and
+  // the loads never feed the motion
   const Vec3 d = Vec3(1, 2, -2).normalized();
+  std::vector<std::pair<TangentialLubrication, std::array<Vec3, 2>>> cases;
   for (const Scalar a2 : {0.5e-3, 1e-3, 3e-3}) {
-    const Mat12 R = resistance(TangentialLubrication(1e-3, a2, mu), d);
+    cases.push_back({TangentialLubrication::spheres(1e-3, a2, d, mu), {1e-3 * d, -a2 * d}});
+  }
+  for (const SpheroidPair& p : kPairs) cases.push_back({lawOf(p), {p.first.arm, p.second.arm}});
+  int which = 0;
+  for (const auto& [law, arms] : cases) {
+    const Mat12 R = resistance(law, arms[0], arms[1]);
     const Scalar scale = largestEntry(R);
-    ASSERT_GT(scale, 0) << a2;
+    ASSERT_GT(scale, 0) << which;
     for (int row = 0; row < 12; ++row)
       for (int col = 0; col < row; ++col)
-        EXPECT_NEAR(R[row][col], R[col][row], 1e-12 * scale) << a2 << " " << row << " " << col;
+        EXPECT_NEAR(R[row][col], R[col][row], 1e-12 * scale) << which << " " << row << " " << col;
     // loads oppose the motion: the power q.R q is never positive, and some motions dissipate
     std::mt19937 rng(7);
     std::normal_distribution<Scalar> normal;
@@ -144,22 +225,67 @@ TEST(TangentialLubrication, OneSymmetricDissipativeResistance) {
       Scalar power = 0;
       for (int row = 0; row < 12; ++row)
         for (int col = 0; col < 12; ++col) power += q[row] * R[row][col] * q[col];
-      EXPECT_LE(power, 1e-12 * scale * qq) << a2;
+      EXPECT_LE(power, 1e-12 * scale * qq) << which;
       largestDissipation = std::max(largestDissipation, -power);
     }
-    EXPECT_GT(largestDissipation, 0) << a2;
+    EXPECT_GT(largestDissipation, 0) << which;
+    ++which;
   }
 }
 
+TEST(TangentialLubrication, TheSurfacesOrientationsSetTheSlidingResistance) {
+  // two spheroids side by side (normal z), sliding along x: with their axes
+  // parallel the shapes carried along cancel (S1 = S2 on the film) and only
+  // the Couette film resists, 2 pi mu R L U with R = 1/sqrt(k1 k2) of the
+  // gap; otherwise the resistance depends on the direction of sliding (most
+  // for crossed axes), which the spheres of the Gaussian radii cannot give
+  const Vec3 z = Vec3::UnitZ();
+  const SpheroidPair parallel = spheroidPair(z, Vec3::UnitX(), Vec3::UnitX());
+  const SpheroidPair crossed = spheroidPair(z, Vec3::UnitX(), Vec3::UnitY());
+  auto slidingForce = [&](const SpheroidPair& p, const Vec3& u) {
+    const TangentialLubrication law = lawOf(p);
+    return law.loads(L, {p.first.arm, u, Vec3::Zero()}, {p.second.arm, Vec3::Zero(), Vec3::Zero()})
+        .force1;
+  };
+  const TangentialLubrication same(spheroidAt(2e-3, 1e-3, Vec3::UnitX(), z).curvature,
+                                   spheroidAt(2e-3, 1e-3, Vec3::UnitX(), -z).curvature, z, mu);
+  const Vec3 fx = same.loads(L, {Vec3(0, 0, 1e-3), Vec3::UnitX(), Vec3::Zero()}, {}).force1;
+  EXPECT_NEAR(fx.x(), -2 * kPi * mu * same.areaRadius() * L, 1e-14) << "S1 = S2";
+  // the equal bodies' R: curvatures 2 (b/a^2) and 2/b along x and y
+  EXPECT_NEAR(same.areaRadius(), 1 / std::sqrt(4 * (1e-3 / 4e-6) / 1e-3), 1e-15);
+  const Vec3 px = slidingForce(parallel, Vec3::UnitX()), py = slidingForce(parallel, Vec3::UnitY());
+  const Vec3 cx = slidingForce(crossed, Vec3::UnitX()), cy = slidingForce(crossed, Vec3::UnitY());
+  // the two spheres of the Gaussian radii (2.5 and 1.2 mm on the spheroids' sides)
+  const Vec3 g = sphereLoads(2.5e-3, 1.2e-3, z, L, Vec3::UnitX(), Vec3::Zero(), Vec3::Zero(),
+                             Vec3::Zero())
+                     .force1;
+  auto inMm = [&](Scalar f) { return -f / (2 * kPi * mu * L) * 1e3; };
+  std::printf("sliding resistance / (2 pi mu L) [mm]: parallel %.4g (x) %.4g (y), crossed %.4g "
+              "(x) %.4g (y), spheres of the Gaussian radii %.4g\n",
+              inMm(px.x()), inMm(py.y()), inMm(cx.x()), inMm(cy.y()), inMm(g.x()));
+  EXPECT_LT(px.x(), 0);
+  EXPECT_LT(cy.y(), 0);
+  EXPECT_GT(std::abs(cx.x() / cy.y() - 1), 0.2) << "crossed: x and y differ";
+  EXPECT_GT(std::abs(px.x() / py.y() - 1), 0.05) << "parallel: x and y differ";
+  EXPECT_GT(std::abs(cy.y() / g.x() - 1), 0.15) << "not the Gaussian radii's spheres";
+}
+
 TEST(TangentialLubrication, RateAndBadArguments) {
-  const TangentialLubrication law(1e-3, kInf, mu);
+  // a sphere of radius 1 mm over a plane: the translation's and the
+  // rotation's blocks of D R D, two equal tangential eigenvalues each
+  const Vec3 d(0, 0, -1), arm = 1e-3 * d;
+  const TangentialLubrication law = TangentialLubrication::spheres(1e-3, kInf, d, mu);
   const Mat3 I = Mat3::Identity() * 1e6;
-  EXPECT_EQ(law.rate(0, 1, I, 0, Mat3::Zero()), 0);
-  EXPECT_NEAR(law.rate(L, 1, Mat3::Zero(), 0, Mat3::Zero()), 6 * kPi * mu * 1e-3 * L * 8 / 15, 1e-15);
-  EXPECT_NEAR(law.rate(L, 0, I, 0, Mat3::Zero()), 8 * kPi * mu * 1e-9 * L * 2 / 5 * I.norm(), 1e-12);
-  EXPECT_THROW(TangentialLubrication(0, 1, mu), std::invalid_argument);
-  EXPECT_THROW(TangentialLubrication(1, -1, mu), std::invalid_argument);
-  EXPECT_THROW(TangentialLubrication(1, 1, 0), std::invalid_argument);
+  EXPECT_EQ(law.rate(0, arm, 1, I, Vec3::Zero(), 0, Mat3::Zero()), 0);
+  EXPECT_NEAR(law.rate(L, arm, 1, Mat3::Zero(), Vec3::Zero(), 0, Mat3::Zero()),
+              std::sqrt(2.0) * 6 * kPi * mu * 1e-3 * L * 8 / 15, 1e-15);
+  EXPECT_NEAR(law.rate(L, arm, 0, I, Vec3::Zero(), 0, Mat3::Zero()),
+              std::sqrt(2.0) * 8 * kPi * mu * 1e-9 * L * 2 / 5 * 1e6, 1e-12);
+  EXPECT_THROW(TangentialLubrication::spheres(0, 1, d, mu), std::invalid_argument);
+  EXPECT_THROW(TangentialLubrication::spheres(1, -1, d, mu), std::invalid_argument);
+  EXPECT_THROW(TangentialLubrication::spheres(1, 1, d, 0), std::invalid_argument);
+  EXPECT_THROW(TangentialLubrication(Mat3::Zero(), Mat3::Zero(), d, mu), std::invalid_argument)
+      << "two planes have no film";
 }
 
 TEST(TangentialLubrication, LogFactorOfTheGapLaw) {
@@ -196,10 +322,11 @@ TEST(TangentialLubrication, ASphereSlidingOverAWallIsHeldBackAndSpunUp) {
       EXPECT_EQ(F[0].norm() + T[0].norm(), 0);
       continue;
     }
-    const TangentialLubrication law(a, kInf, mu);
+    const TangentialLubrication law = TangentialLubrication::spheres(a, kInf, -Vec3::UnitZ(), mu);
     const Scalar Lw = std::log(7.5);
     const CollisionBody cb = b.collisionBody();
-    const Scalar relax = 1 / (1 + dt * law.rate(Lw, 1 / cb.mass, cb.inverseInertia, 0, Mat3::Zero()));
+    const Scalar relax = 1 / (1 + dt * law.rate(Lw, -a * Vec3::UnitZ(), 1 / cb.mass, cb.inverseInertia,
+                                                Vec3::Zero(), 0, Mat3::Zero()));
     EXPECT_GT(relax, 0.5) << "a case where the terms are resolved by the sub-step";
     EXPECT_LT(relax, 1);
     EXPECT_NEAR(F[0].x(), -relax * 6 * kPi * mu * a * Lw * 8 / 15 * 0.05, 1e-12 * std::abs(F[0].x()));

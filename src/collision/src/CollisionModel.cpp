@@ -866,11 +866,9 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
   if (lubricating || film) {
     const Scalar r1 = b1.shape.curvatureRadii(p1).gaussian;
     const Scalar r2 = wall ? kInf : bodies[j].shape.curvatureRadii(p2 - shift).gaussian;
-    const Scalar squeezeRadius =
-        GapParaboloid::fromCurvatureTensors(
-            b1.shape.curvatureTensor(p1),
-            wall ? Mat3::Zero() : Mat3(bodies[j].shape.curvatureTensor(p2 - shift)), n)
-            .squeezeRadius();
+    const Mat3 S1 = b1.shape.curvatureTensor(p1);
+    const Mat3 S2 = wall ? Mat3::Zero() : Mat3(bodies[j].shape.curvatureTensor(p2 - shift));
+    const Scalar squeezeRadius = GapParaboloid::fromCurvatureTensors(S1, S2, n).squeezeRadius();
     DampedPair pair;
     pair.first = i;
     pair.second = j;
@@ -892,7 +890,7 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
       if (pair.lubrication > 0) ++statistics_.lubricated;
       if (model.lubrication().tangential()) {
         addTangentialLubrication(bodies, lubrication, i, j, shift, pair.law.logFactor(gap),
-                                 r1, r2, n, p1, p2, s1, s2, subDt, force, torque);
+                                 S1, S2, n, p1, p2, s1, s2, subDt, force, torque);
       }
     }
     if (film) {
@@ -913,34 +911,39 @@ void CollisionModel::interact(const std::vector<CollisionBody>& bodies, int i, i
 
 void CollisionModel::addTangentialLubrication(const std::vector<CollisionBody>& bodies,
                                               const Lubrication& lubrication, int i, int j,
-                                              const Vec3& shift, Scalar logFactor, Scalar r1,
-                                              Scalar r2, const Vec3& n, const Vec3& p1, const Vec3& p2,
-                                              const ContactSide& s1, const ContactSide& s2,
-                                              Scalar subDt, std::vector<Vec3>& force,
+                                              const Vec3& shift, Scalar logFactor, const Mat3& S1,
+                                              const Mat3& S2, const Vec3& n, const Vec3& p1,
+                                              const Vec3& p2, const ContactSide& s1,
+                                              const ContactSide& s2, Scalar subDt,
+                                              std::vector<Vec3>& force,
                                               std::vector<Vec3>& torque) const {
   if (!(logFactor > 0)) return;
   const bool wall = j < 0;
-  const TangentialLubrication law(r1, r2, lubrication.viscosity());
-  // each body's osculating sphere at its closest point, moving with the body
-  // (body 2 through its image: its own frame is the point less the shift)
+  const TangentialLubrication law(S1, S2, n, lubrication.viscosity());
+  // each body's motion about its closest point (body 2 through its image:
+  // its own frame is the point less the shift)
   const CollisionBody& b1 = bodies[i];
-  const Vec3 c1 = p1 - r1 * n;
-  const Vec3 c2 = wall ? Vec3::Zero() : Vec3(p2 + r2 * n - shift);
-  const TangentialLubricationLoads l = law.loads(
-      logFactor, n, pointVelocity(b1, c1), b1.angularVelocity,
-      wall ? Vec3::Zero() : pointVelocity(bodies[j], c2),
-      wall ? Vec3::Zero() : Vec3(bodies[j].angularVelocity));
+  FilmSide side1, side2;
+  side1.arm = p1 - b1.shape.centre();
+  side1.velocity = b1.velocity;
+  side1.angularVelocity = b1.angularVelocity;
+  if (!wall) {
+    side2.arm = p2 - shift - bodies[j].shape.centre();
+    side2.velocity = bodies[j].velocity;
+    side2.angularVelocity = bodies[j].angularVelocity;
+  }
+  const TangentialLubricationLoads l = law.loads(logFactor, side1, side2);
   // explicit in the sub-step, scaled by the backward-Euler factor of the
   // fastest rate the terms impose: close to 1 where the rate is small against
   // 1/subDt, and never reversing the relative motion where it is not
   const Scalar relax =
-      1 / (1 + subDt * law.rate(logFactor, s1.inverseMass, s1.inverseInertia, s2.inverseMass,
-                                 s2.inverseInertia));
+      1 / (1 + subDt * law.rate(logFactor, side1.arm, s1.inverseMass, s1.inverseInertia,
+                                 side2.arm, s2.inverseMass, s2.inverseInertia));
   force[i] += relax * l.force1;
-  torque[i] += relax * (l.torque1 + (c1 - b1.shape.centre()).cross(l.force1));
+  torque[i] += relax * l.torque1;
   if (!wall) {
     force[j] -= relax * l.force1;
-    torque[j] += relax * (l.torque2 - (c2 - bodies[j].shape.centre()).cross(l.force1));
+    torque[j] += relax * l.torque2;
   }
 }
 

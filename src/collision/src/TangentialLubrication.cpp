@@ -1,78 +1,99 @@
 #include "collision/TangentialLubrication.hpp"
 
+#include "collision/GapParaboloid.hpp"
 #include "collision/Range.hpp"
 
-#include <algorithm>
+#include <Eigen/Eigenvalues>
+
 #include <cmath>
 #include <stdexcept>
 
 namespace collision {
 
 namespace {
-// the ln(1/xi) coefficients of Y^A_11, (2/3)|Y^B_11|, (1/2)|Y^B_11| and Y^C_11
-// for the radius ratio beta (infinite: a sphere and a plane)
-struct Coefficients {
-  Scalar A, B, E, G;
-};
-Coefficients coefficients(Scalar beta) {
-  if (!std::isfinite(beta)) return {Scalar(8) / 15, Scalar(2) / 15, Scalar(1) / 10, Scalar(2) / 5};
-  const Scalar b1 = 1 + beta;
-  const Scalar B = Scalar(2) / 15 * beta * (4 + beta) / (b1 * b1);
-  return {Scalar(4) / 15 * beta * (2 + beta + 2 * beta * beta) / (b1 * b1 * b1), B, Scalar(0.75) * B,
-          Scalar(2) / 5 * beta / b1};
+/// the inverse on the plane normal to n of a symmetric tensor T that maps
+/// that plane onto itself and n to 0
+Mat3 inverseOnPlane(const Mat3& T, const Vec3& n) {
+  const Mat3 nn = n * n.transpose();
+  return (T + nn).inverse() - nn;
+}
+
+/// the symmetric square root of a symmetric positive semi-definite tensor
+Mat3 squareRoot(const Mat3& A) {
+  if (A.isZero(0)) return Mat3::Zero();
+  return Eigen::SelfAdjointEigenSolver<Mat3>(0.5 * (A + A.transpose())).operatorSqrt();
 }
 }  // namespace
 
-TangentialLubrication::TangentialLubrication(Scalar a1, Scalar a2, Scalar viscosity)
-    : wall_(!std::isfinite(a2)), a1_(a1), a2_(a2), mu_(viscosity) {
-  if (!(std::isfinite(a1) && a1 > 0) || !(a2 > 0) || !(std::isfinite(viscosity) && viscosity > 0)) {
-    throw std::invalid_argument("tangential lubrication: radii " + Range::number(a1) + ", " +
-                                Range::number(a2) + " and viscosity " + Range::number(viscosity) +
+TangentialLubrication::TangentialLubrication(const Mat3& S1, const Mat3& S2, const Vec3& n,
+                                             Scalar viscosity)
+    : n_(n), P_(Mat3::Identity() - n * n.transpose()), mu_(viscosity) {
+  if (!(std::isfinite(viscosity) && viscosity > 0)) {
+    throw std::invalid_argument("tangential lubrication: viscosity " + Range::number(viscosity) +
                                 " must be > 0");
   }
-  beta_ = wall_ ? a2 : a2 / a1;
-  const Coefficients c1 = coefficients(beta_);
-  A_ = c1.A;
-  B_ = c1.B;
-  E_ = c1.E;
-  G_ = c1.G;
-  const Coefficients c2 = wall_ ? Coefficients{0, 0, 0, 0} : coefficients(1 / beta_);
-  E2_ = c2.E;
-  G2_ = c2.G;
+  // the gap's principal curvatures; throws unless K is positive definite on the plane
+  const GapParaboloid gap = GapParaboloid::fromCurvatureTensors(S1, S2, n);
+  radius_ = 1 / std::sqrt(gap.k1 * gap.k2);
+  S1_ = P_ * S1 * P_;
+  S2_ = P_ * S2 * P_;
+  const Mat3 K = S1_ + S2_;
+  const Mat3 Kinv = inverseOnPlane(K, n);
+  M_ = inverseOnPlane(2 * K.trace() * P_ + K, n);
+  forceMap_ = (P_ - 2 * S1_ * Kinv) * M_;
+  torqueMap_ = Kinv * M_;
 }
 
-TangentialLubricationLoads TangentialLubrication::loads(Scalar logFactor, const Vec3& d,
-                                                        const Vec3& u1, const Vec3& omega1,
-                                                        const Vec3& u2, const Vec3& omega2) const {
+TangentialLubrication TangentialLubrication::spheres(Scalar a1, Scalar a2, const Vec3& n,
+                                                     Scalar viscosity) {
+  if (!(std::isfinite(a1) && a1 > 0) || !(a2 > 0)) {
+    throw std::invalid_argument("tangential lubrication: radii " + Range::number(a1) + ", " +
+                                Range::number(a2) + " must be > 0");
+  }
+  const Mat3 P = Mat3::Identity() - n * n.transpose();
+  return TangentialLubrication(P / a1, std::isfinite(a2) ? Mat3(P / a2) : Mat3::Zero(), n,
+                               viscosity);
+}
+
+TangentialLubricationLoads TangentialLubrication::loads(Scalar logFactor, const FilmSide& body1,
+                                                        const FilmSide& body2) const {
   TangentialLubricationLoads out;
   if (!(logFactor > 0)) return out;
-  const Mat3 P = Mat3::Identity() - d * d.transpose();
-  const Vec3 u = wall_ ? u1 : Vec3(u1 - u2);
-  const Scalar pi = kPi;
-  Vec3 f = A_ * (P * u) + B_ * a1_ * omega1.cross(d);
-  Vec3 t1 = E_ * d.cross(u) + G_ * a1_ * (P * omega1);
-  if (!wall_) {
-    f += ((1 + beta_) * A_ - B_) * a1_ * omega2.cross(d);
-    t1 += ((1 + beta_) * E_ - G_) * a1_ * (P * omega2);
-    // sphere 2: d -> -d and u -> -u leave d x u unchanged
-    const Scalar beta2 = 1 / beta_;
-    const Vec3 t2 = E2_ * d.cross(u) + G2_ * a2_ * (P * omega2) +
-                    ((1 + beta2) * E2_ - G2_) * a2_ * (P * omega1);
-    out.torque2 = -8 * pi * mu_ * a2_ * a2_ * logFactor * t2;
-  }
-  out.force1 = -6 * pi * mu_ * a1_ * logFactor * f;
-  out.torque1 = -8 * pi * mu_ * a1_ * a1_ * logFactor * t1;
+  // the surfaces' velocities along the film at the closest points
+  const Vec3 U1 = P_ * (body1.velocity + body1.angularVelocity.cross(body1.arm));
+  const Vec3 U2 = P_ * (body2.velocity + body2.angularVelocity.cross(body2.arm));
+  const Vec3 w = (S2_ - S1_) * (U1 - U2) +
+                 2 * n_.cross(body2.angularVelocity - body1.angularVelocity);
+  const Scalar scale = kPi * mu_ * radius_ * logFactor;
+  out.force1 = scale * (2 * (U2 - U1) - 6 * (forceMap_ * w));
+  // the pressure's moment about the closest point
+  const Vec3 moment = 12 * scale * (torqueMap_ * w).cross(n_);
+  out.torque1 = moment + body1.arm.cross(out.force1);
+  out.torque2 = -moment - body2.arm.cross(out.force1);
   return out;
 }
 
-Scalar TangentialLubrication::rate(Scalar logFactor, Scalar inverseMass1, const Mat3& inverseInertia1,
+Scalar TangentialLubrication::rate(Scalar logFactor, const Vec3& arm1, Scalar inverseMass1,
+                                   const Mat3& inverseInertia1, const Vec3& arm2,
                                    Scalar inverseMass2, const Mat3& inverseInertia2) const {
   if (!(logFactor > 0)) return 0;
-  const Scalar pi = kPi;
-  Scalar r = 6 * pi * mu_ * a1_ * A_ * (inverseMass1 + (wall_ ? 0 : inverseMass2));
-  r = std::max(r, 8 * pi * mu_ * a1_ * a1_ * a1_ * G_ * inverseInertia1.norm());
-  if (!wall_) r = std::max(r, 8 * pi * mu_ * a2_ * a2_ * a2_ * G2_ * inverseInertia2.norm());
-  return logFactor * r;
+  // D: the square roots of the mobilities of (U1, Omega1, U2, Omega2)
+  const Mat3 D[4] = {Mat3::Identity() * std::sqrt(inverseMass1), squareRoot(inverseInertia1),
+                     Mat3::Identity() * std::sqrt(inverseMass2), squareRoot(inverseInertia2)};
+  // the Frobenius norm of D R D, column by column
+  Scalar sum = 0;
+  for (int k = 0; k < 12; ++k) {
+    FilmSide side[2];
+    side[0].arm = arm1;
+    side[1].arm = arm2;
+    Vec3* motion[4] = {&side[0].velocity, &side[0].angularVelocity, &side[1].velocity,
+                       &side[1].angularVelocity};
+    *motion[k / 3] = D[k / 3].col(k % 3);
+    const TangentialLubricationLoads l = loads(1, side[0], side[1]);
+    sum += (D[0] * l.force1).squaredNorm() + (D[1] * l.torque1).squaredNorm() +
+           (D[2] * l.force1).squaredNorm() + (D[3] * l.torque2).squaredNorm();
+  }
+  return logFactor * std::sqrt(sum);
 }
 
 }  // namespace collision

@@ -414,10 +414,10 @@ class CollisionModel {
   /// integral over the gap from h0 to h1
   /// The logarithmic tangential lubrication terms of a pair (j < 0: a wall)
   /// below its activation gap, explicit in the sub-step (TangentialLubrication.hpp):
-  /// r1, r2 the Gaussian curvature radii at the closest points p1, p2
+  /// S1, S2 the curvature tensors at the closest points p1, p2 (a wall: 0)
   void addTangentialLubrication(const std::vector<CollisionBody>& bodies,
                                 const Lubrication& lubrication, int i, int j, const Vec3& shift,
-                                Scalar logFactor, Scalar r1, Scalar r2, const Vec3& n,
+                                Scalar logFactor, const Mat3& S1, const Mat3& S2, const Vec3& n,
                                 const Vec3& p1, const Vec3& p2, const ContactSide& s1,
                                 const ContactSide& s2, Scalar subDt, std::vector<Vec3>& force,
                                 std::vector<Vec3>& torque) const;

@@ -1,42 +1,46 @@
 /**
  * @file TangentialLubrication.hpp
- * @brief The logarithmic lubrication terms of two spheres (Jeffrey and
- *        Onishi 1984) or a sphere and a plane (Goldman, Cox and Brenner
- *        1967): the force and torques of relative sliding and rolling.
+ * @brief The logarithmic lubrication terms of two smooth convex surfaces at
+ *        a small gap, from the gap's paraboloid: the force and torques of
+ *        relative sliding and rolling.
  *
- * Two spheres of radii a1, a2 (beta = a2/a1) at a small gap, d the unit
- * normal from 1 to 2, P = I - d d^T, U_k and Omega_k the velocities of the
- * centres and the angular velocities, u = U1 - U2. The terms of the
- * resistance functions singular in the gap are proportional to ln(1/x)
- * (x the gap ratio); the correction a resolved simulation adds below its
- * activation gap x_act is their part the mesh does not carry, with the
- * log factor L = ln(x_act/max(x, x_sat)) (LubricationGapLaw::logFactor: the
- * O(1) constants of the resistance functions cancel in the difference).
- * The hydrodynamic force on sphere 1 and the torques about the centres are
- *     F1 = -6 pi mu a1 L [A P u + B a1 Omega1 x d + ((1 + beta) A - B) a1 Omega2 x d],
- *     T1 = -8 pi mu a1^2 L [E d x u + G a1 P Omega1 + ((1 + beta) E - G) a1 P Omega2],
- *     F2 = -F1, T2 the same as T1 with 1 and 2 exchanged (beta -> 1/beta, d -> -d, u -> -u),
- * with the coefficients of the ln(1/xi) terms of Y^A_11, Y^B_11 and Y^C_11
- * (Jeffrey and Onishi 1984; Kim and Karrila 1991, chapter 11)
- *     A = (4/15) beta (2 + beta + 2 beta^2)/(1 + beta)^3,
- *     B = (2/15) beta (4 + beta)/(1 + beta)^2 = -(2/3) g_YB,   E = (3/4) B = -g_YB/2,
- *     G = (2/5) beta/(1 + beta).
- * The coefficients of Omega2 follow from the invariance under a rigid motion
- * of the pair (a rotation about the contact point moves no fluid through the
- * film): (1 + beta) E - G = beta^2/(10 (1 + beta)), the ln term of Y^C_12.
- * The force-rotation and torque-translation coefficients are those of one
- * symmetric resistance matrix (6 B = 8 E), so the terms dissipate energy for
- * any motion. A sphere and a plane (a2 infinite, the plane at rest): A = 8/15,
- * B = 2/15, E = 1/10, G = 2/5, the ln(a/h) terms of Goldman, Cox and Brenner
- * (1967); normal rotation (twist) has no logarithmic term.
+ * Closest points p1, p2 a gap h0 apart along the unit normal n (from body 1
+ * to body 2); S1, S2 the surfaces' curvature tensors there on the tangent
+ * plane (P = I - n n^T; a plane: 0), K = S1 + S2 the gap's (GapParaboloid):
+ * h(t) = h0 + t^T K t/2 for a tangent offset t, principal curvatures k1, k2.
+ * Each body moves rigidly: v_k its velocity at p_k, U_k = P v_k its surface
+ * velocity along the film, Omega_k its angular velocity. The film's gap
+ * changes at the rate dh/dt = (v2 - v1).n + g.t, g = n x (Omega2 - Omega1)
+ * - S1 U1 - S2 U2 (the surfaces turning and their curved shapes carried
+ * along), and the Reynolds equation div(h^3 grad p) = 6 mu (U1 + U2).grad h
+ * + 12 mu dh/dt has, for its part linear in t, the exact solution
+ *     p = -(6 mu/h0^2) (M w).t / q^2,   q = h/h0,
+ *     w = (S2 - S1)(U1 - U2) + 2 n x (Omega2 - Omega1),
+ *     M = (2 tr(K) P + K)^+  (along the principal axes: 1/(3 k1 + 2 k2), 1/(2 k1 + 3 k2))
+ * (the same change of variables as the squeeze film's exact solution,
+ * GapParaboloid). The tractions on the surfaces, -(h/2) grad p -+ mu (U1 -
+ * U2)/h along the film and the pressure on the inclined surfaces, integrated
+ * over the film, diverge logarithmically as h0 -> 0; their ln(1/h0) terms,
+ * with the log factor L for ln(1/h0), are
+ *     F1 = pi mu R L [2 (U2 - U1) - 6 (P - 2 S1 K^+) M w],   F2 = -F1,
+ *     T1 = 12 pi mu R L (K^+ M w) x n + (p1 - c1) x F1,
+ *     T2 = -12 pi mu R L (K^+ M w) x n + (p2 - c2) x F2,
+ * R = 1/sqrt(k1 k2) (the film's area scale, integral of dA/h = 2 pi R ln),
+ * T_k about the body's centre c_k. For two spheres (S_k = P/a_k) these are
+ * exactly the ln(1/xi) terms of the resistance functions Y^A, Y^B, Y^C of
+ * Jeffrey and Onishi (1984), for a sphere and a plane those of Goldman, Cox
+ * and Brenner (1967) (tests/collision/TangentialLubricationTest.cpp checks
+ * both for every term); for spheroids they take the two surfaces' principal
+ * directions and curvatures into account, to the same leading order in the
+ * gap. Normal rotation (twist) has no logarithmic term.
  *
- * Spheroids: each body is replaced at its closest point by the sphere of its
- * Gaussian curvature radius there (its centre p1 - a1 d, p2 + a2 d), moving
- * rigidly with the body; the same local-sphere approximation as the
- * logarithmic terms of the normal law (LubricationLaw.hpp). No closed form is
- * known for the tangential terms of an elliptic paraboloidal gap.
+ * The correction a resolved simulation adds below its activation gap x_act
+ * is the part of these terms the mesh does not carry, L = ln(x_act/max(x,
+ * x_sat)) (LubricationGapLaw::logFactor: the O(1) constants of the
+ * resistance functions cancel in the difference).
  *
- * See also: LubricationLaw.hpp, CollisionModel, docs/collisions.md.
+ * See also: GapParaboloid.hpp, LubricationLaw.hpp, CollisionModel,
+ * docs/collisions.md.
  */
 #ifndef COLLISION_TANGENTIALLUBRICATION_HPP
 #define COLLISION_TANGENTIALLUBRICATION_HPP
@@ -45,42 +49,60 @@
 
 namespace collision {
 
-/// The hydrodynamic loads of the terms on sphere 1 and 2 (force on 2: -force1),
-/// the torques about the spheres' centres.
+/// The hydrodynamic loads of the terms on body 1 and 2 (force on 2: -force1),
+/// the torques about the bodies' centres.
 struct TangentialLubricationLoads {
   Vec3 force1 = Vec3::Zero();
   Vec3 torque1 = Vec3::Zero();
   Vec3 torque2 = Vec3::Zero();
 };
 
+/// The motion of one body: the arm from its centre to its closest point, and
+/// its centre's velocity and angular velocity (a plane at rest: all zero).
+struct FilmSide {
+  Vec3 arm = Vec3::Zero();
+  Vec3 velocity = Vec3::Zero();
+  Vec3 angularVelocity = Vec3::Zero();
+};
+
 class TangentialLubrication {
  public:
   /**
-   * @param a1, a2 the spheres' radii (a2 infinite: a plane at rest)
-   * @throws std::invalid_argument unless a1 > 0, a2 > 0 and viscosity > 0
+   * @param S1, S2 the surfaces' curvature tensors at the closest points (world
+   *        frame, as Ellipsoid::curvatureTensor gives them; a plane: 0)
+   * @param n the unit normal from body 1 to body 2
+   * @throws std::invalid_argument unless viscosity > 0 and S1 + S2 is
+   *         positive definite on the plane normal to n (GapParaboloid)
    */
-  TangentialLubrication(Scalar a1, Scalar a2, Scalar viscosity);
+  TangentialLubrication(const Mat3& S1, const Mat3& S2, const Vec3& n, Scalar viscosity);
 
-  /// The loads for the log factor L >= 0, the unit normal d from 1 to 2 and
-  /// the motions of the centres (U2, Omega2 ignored for a plane).
-  TangentialLubricationLoads loads(Scalar logFactor, const Vec3& d, const Vec3& u1,
-                                   const Vec3& omega1, const Vec3& u2, const Vec3& omega2) const;
+  /// Two spheres of radii a1, a2 (a2 infinite: a plane), n from 1 to 2.
+  static TangentialLubrication spheres(Scalar a1, Scalar a2, const Vec3& n, Scalar viscosity);
 
-  /// The largest rate at which the terms alone change the motion, for the
-  /// log factor L: L times the largest of 6 pi mu a1 A (1/m1 + 1/m2) and
-  /// 8 pi mu a_k^3 G_k |I_k^-1| (k = 1, 2; |.| the Frobenius norm, an upper
-  /// bound of the largest eigenvalue). Inverse masses 0: fixed.
-  Scalar rate(Scalar logFactor, Scalar inverseMass1, const Mat3& inverseInertia1,
-              Scalar inverseMass2, const Mat3& inverseInertia2) const;
+  /// The loads for the log factor L >= 0 (0 or less: none).
+  TangentialLubricationLoads loads(Scalar logFactor, const FilmSide& body1,
+                                   const FilmSide& body2) const;
 
-  bool wall() const { return wall_; }
+  /// The largest rate at which the terms alone change the bodies' motion, for
+  /// the log factor L: the Frobenius norm (an upper bound of the largest
+  /// eigenvalue) of D R D, R the 12 x 12 resistance of loads() in the centres'
+  /// velocities and angular velocities for these arms, D = diag(sqrt(m1^-1),
+  /// sqrt(I1^-1), sqrt(m2^-1), sqrt(I2^-1)). Inverse masses 0: fixed.
+  Scalar rate(Scalar logFactor, const Vec3& arm1, Scalar inverseMass1, const Mat3& inverseInertia1,
+              const Vec3& arm2, Scalar inverseMass2, const Mat3& inverseInertia2) const;
+
+  /// R = 1/sqrt(k1 k2) [m]
+  Scalar areaRadius() const { return radius_; }
 
  private:
-  bool wall_;
-  Scalar a1_, a2_, mu_;
-  Scalar A_, B_, E_, G_;  ///< sphere 1's coefficients
-  Scalar E2_, G2_;        ///< sphere 2's E and G (beta -> 1/beta)
-  Scalar beta_;
+  Vec3 n_;
+  Mat3 P_;
+  Mat3 S1_, S2_;
+  Mat3 forceMap_;   ///< P - 2 S1 K^+, then times M
+  Mat3 torqueMap_;  ///< K^+ M
+  Mat3 M_;
+  Scalar radius_ = 0;
+  Scalar mu_ = 0;
 };
 
 }  // namespace collision

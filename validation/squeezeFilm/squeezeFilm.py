@@ -12,7 +12,8 @@ run:  every configuration (two bodies, each an ellipsoid or a plane) at the gaps
       paraboloid gap itself on the solver against F_par. Writes DIR/results/results.csv and
       DIR/results/paraboloid.csv (DIR: this folder, or run-quick/ with --quick).
       --quick: three configurations, two gaps, a coarse grid (a few seconds).
-plot: DIR/results/table.md, metrics.json and the figures from those two files.
+plot: DIR/results/table.md, metrics.json and the figures from those two files (the
+      sliding_* keys that slidingFilm.py plot writes into metrics.json are kept).
 
 Units: viscosity mu = 1, approach speed U = 1, lengths in the smallest semi-axis.
 """
@@ -326,11 +327,15 @@ def bisected(edges):
 # ---------------------------------------------------------------------------
 # the Reynolds equation
 
+def face_gaps(h_face, h_left, h_right):
+    """The gap on the faces; where the face's gap is undefined (a film edge) the gap of the
+    cell beside it that is in the film."""
+    return np.where(np.isfinite(h_face), h_face, np.fmin(h_left, h_right))
+
+
 def face_conductances(h_face, h_left, h_right, length, distance):
-    """h^3 length/distance on the faces; where the face's gap is undefined (a film edge)
-    the gap of the cell beside it that is in the film."""
-    h = np.where(np.isfinite(h_face), h_face, np.fmin(h_left, h_right))
-    return h ** 3 * length / distance
+    """h^3 length/distance on the faces (face_gaps)."""
+    return face_gaps(h_face, h_left, h_right) ** 3 * length / distance
 
 
 def centre_distances(edges, centres):
@@ -354,43 +359,71 @@ def add_faces(rows, cols, vals, diag, index_left, index_right, conductance):
         vals.append(-conductance[both])
 
 
+class ReynoldsFilm:
+    """Cell-centred finite volumes for -div(h^3 grad p) on the tensor-product grid, p = 0
+    on the outer boundary and in the cells whose centre is out of the film (gap
+    undefined): the matrix, assembled once, and its solution for any right-hand side.
+    Cells (i, j): x between x_edges[i] and x_edges[i + 1], y between y_edges[j] and
+    y_edges[j + 1]; the film's cells are numbered in the order of in_film's True entries.
+    index: (nx + 2, ny + 2), the cells' numbers padded by a ring of -1 (out of the film);
+    the faces normal to x are (nx + 1, ny), face i between padded cells i and i + 1 (rows
+    j + 1), those normal to y (nx, ny + 1) likewise; h_x_face, h_y_face: the exact gap at
+    the face centres (NaN out of the film)."""
+
+    def __init__(self, x_edges, y_edges, gap):
+        self.x_edges, self.y_edges = x_edges, y_edges
+        self.xc = xc = 0.5 * (x_edges[1:] + x_edges[:-1])
+        self.yc = yc = 0.5 * (y_edges[1:] + y_edges[:-1])
+        self.dx, self.dy = dx, dy = np.diff(x_edges), np.diff(y_edges)
+        nx, ny = len(xc), len(yc)
+        self.h_centre = h_centre = gap(xc[:, None], yc[None, :])
+        self.in_film = in_film = np.isfinite(h_centre)
+        self.index = index = np.full((nx + 2, ny + 2), -1)
+        index[1:-1, 1:-1][in_film] = np.arange(in_film.sum())
+        self.h_pad = h_pad = np.full((nx + 2, ny + 2), np.nan)
+        h_pad[1:-1, 1:-1] = h_centre
+        self.cells = n = int(in_film.sum())
+        diag = np.zeros(n)
+        rows, cols, vals = [], [], []
+        self.x_distance = centre_distances(x_edges, xc)[:, None]
+        self.y_distance = centre_distances(y_edges, yc)[None, :]
+        self.h_x_face = gap(x_edges[:, None], yc[None, :])
+        tx = face_conductances(self.h_x_face, h_pad[:-1, 1:-1], h_pad[1:, 1:-1], dy[None, :],
+                               self.x_distance)
+        add_faces(rows, cols, vals, diag, index[:-1, 1:-1].ravel(), index[1:, 1:-1].ravel(),
+                  tx.ravel())
+        self.h_y_face = gap(xc[:, None], y_edges[None, :])
+        ty = face_conductances(self.h_y_face, h_pad[1:-1, :-1], h_pad[1:-1, 1:], dx[:, None],
+                               self.y_distance)
+        add_faces(rows, cols, vals, diag, index[1:-1, :-1].ravel(), index[1:-1, 1:].ravel(),
+                  ty.ravel())
+        rows.append(np.arange(n))
+        cols.append(np.arange(n))
+        vals.append(diag)
+        self.matrix = sp.csc_matrix((np.concatenate(vals), (np.concatenate(rows),
+                                                             np.concatenate(cols))),
+                                    shape=(n, n))
+        self.area = (dx[:, None] * dy[None, :])[in_film]
+
+    def solve(self, rhs):
+        """The pressure in the film's cells for the right-hand side rhs (the source
+        integrated over each cell; (cells,) or (cells, k) for k at once)."""
+        return spla.spsolve(self.matrix, rhs)
+
+    def padded(self, pressure):
+        """One solution (cells,) as an (nx + 2, ny + 2) array, 0 out of the film and on the
+        padding ring."""
+        out = np.zeros(self.index.shape)
+        out[1:-1, 1:-1][self.in_film] = pressure
+        return out
+
+
 def solve_reynolds(x_edges, y_edges, gap):
-    """Finite volumes for div(h^3 grad p) = -12 mu U (the surfaces approach at U, p > 0)
-    on the tensor-product grid, p = 0 on the outer boundary and in the cells whose centre
-    is out of the film (gap undefined). Returns the force F = sum p dA and the number of
-    cells in the film."""
-    xc = 0.5 * (x_edges[1:] + x_edges[:-1])
-    yc = 0.5 * (y_edges[1:] + y_edges[:-1])
-    dx, dy = np.diff(x_edges), np.diff(y_edges)
-    nx, ny = len(xc), len(yc)
-    h_centre = gap(xc[:, None], yc[None, :])
-    in_film = np.isfinite(h_centre)
-    index = np.full((nx + 2, ny + 2), -1)
-    index[1:-1, 1:-1][in_film] = np.arange(in_film.sum())
-    h_pad = np.full((nx + 2, ny + 2), np.nan)
-    h_pad[1:-1, 1:-1] = h_centre
-    n = int(in_film.sum())
-    diag = np.zeros(n)
-    rows, cols, vals = [], [], []
-    # faces normal to x: face i between padded cells i and i+1 (rows j+1)
-    tx = face_conductances(gap(x_edges[:, None], yc[None, :]), h_pad[:-1, 1:-1],
-                           h_pad[1:, 1:-1], dy[None, :],
-                           centre_distances(x_edges, xc)[:, None])
-    add_faces(rows, cols, vals, diag, index[:-1, 1:-1].ravel(), index[1:, 1:-1].ravel(),
-              tx.ravel())
-    ty = face_conductances(gap(xc[:, None], y_edges[None, :]), h_pad[1:-1, :-1],
-                           h_pad[1:-1, 1:], dx[:, None],
-                           centre_distances(y_edges, yc)[None, :])
-    add_faces(rows, cols, vals, diag, index[1:-1, :-1].ravel(), index[1:-1, 1:].ravel(),
-              ty.ravel())
-    rows.append(np.arange(n))
-    cols.append(np.arange(n))
-    vals.append(diag)
-    matrix = sp.csc_matrix((np.concatenate(vals), (np.concatenate(rows),
-                                                    np.concatenate(cols))), shape=(n, n))
-    area = (dx[:, None] * dy[None, :])[in_film]
-    pressure = spla.spsolve(matrix, 12.0 * MU * U * area)
-    return float(pressure @ area), n
+    """ReynoldsFilm for div(h^3 grad p) = -12 mu U (the surfaces approach at U, p > 0).
+    Returns the force F = sum p dA and the number of cells in the film."""
+    film = ReynoldsFilm(x_edges, y_edges, gap)
+    pressure = film.solve(12.0 * MU * U * film.area)
+    return float(pressure @ film.area), film.cells
 
 
 def contact_grid(contact, spec, fraction=1.0):
@@ -794,8 +827,14 @@ def plot(args):
     folder = results_dir(out)
     write_table(os.path.join(folder, "table.md"), rows, checks)
     metrics = metrics_of(rows, checks)
-    with open(os.path.join(folder, "metrics.json"), "w") as f:
-        json.dump(metrics, f, indent=1, sort_keys=True)
+    path = os.path.join(folder, "metrics.json")
+    # the sliding_* keys are slidingFilm.py plot's
+    kept = {}
+    if os.path.exists(path):
+        with open(path) as f:
+            kept = {k: v for k, v in json.load(f).items() if k.startswith("sliding_")}
+    with open(path, "w") as f:
+        json.dump({**kept, **metrics}, f, indent=1, sort_keys=True)
         f.write("\n")
     plot_ratios(os.path.join(folder, "forceRatio.png"), rows)
     plot_gaussian(os.path.join(folder, "gaussianRadius.png"), rows)

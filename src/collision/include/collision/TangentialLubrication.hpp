@@ -32,7 +32,14 @@
  * and Brenner (1967) (tests/collision/TangentialLubricationTest.cpp checks
  * both for every term); for spheroids they take the two surfaces' principal
  * directions and curvatures into account, to the same leading order in the
- * gap. Normal rotation (twist) has no logarithmic term.
+ * gap. Normal rotation (twist) has no logarithmic term. The Reynolds
+ * equation solved on the exact gap of spheroids and planes gives these
+ * coefficients to 0.6 % where the closest points are vertices of the
+ * surfaces (validation/squeezeFilm, slidingFilm.py). Where they are not (a
+ * tilted spheroid), the gap's cubic terms add a ln(1/h0) coupling between
+ * normal and tangential motion, a normal force under sliding and a
+ * tangential force under approach, of the order of these terms; the law,
+ * built on the paraboloid, does not contain it.
  *
  * The correction a resolved simulation adds below its activation gap x_act
  * is the part of these terms the mesh does not carry, L = ln(x_act/max(x,

@@ -15,8 +15,8 @@ run:  body 1 of each configuration in four rigid motions (translation along e1, 
       Gaussian spheres' coefficients. Writes DIR/results/sliding.csv (DIR: this folder, or
       run-quick/ with --quick).
       --quick: two configurations on the coarse grid, two gaps (about a second).
-plot: DIR/results/slidingTable.md and the sliding_* keys of DIR/results/metrics.json (the
-      other keys kept).
+plot: DIR/results/slidingTable.md, cubicCoupling.md (cubicCoupling.py) and the sliding_* keys
+      of DIR/results/metrics.json (the other keys kept).
 
 Units: viscosity mu = 1, unit speeds (|v| = 1, |Omega| = 1), lengths in the smallest
 semi-axis.
@@ -626,6 +626,9 @@ def plot(args):
         with open(path) as f:
             metrics = {k: v for k, v in json.load(f).items() if not k.startswith("sliding_")}
     mine = metrics_of(rows)
+    # the closed form of the coupling from the gap's cubic terms against these runs
+    from cubicCoupling import compare
+    mine.update(compare(out))
     metrics.update(mine)
     with open(path, "w") as f:
         json.dump(metrics, f, indent=1, sort_keys=True)

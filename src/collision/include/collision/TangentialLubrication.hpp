@@ -39,7 +39,8 @@
  * tilted spheroid), the gap's cubic terms add a ln(1/h0) coupling between
  * normal and tangential motion, a normal force under sliding and a
  * tangential force under approach, of the order of these terms; the law,
- * built on the paraboloid, does not contain it.
+ * built on the paraboloid, does not contain it (its closed form, checked
+ * against the same numerics: validation/squeezeFilm, cubicCoupling.py).
  *
  * The correction a resolved simulation adds below its activation gap x_act
  * is the part of these terms the mesh does not carry, L = ln(x_act/max(x,

@@ -21,7 +21,6 @@ plot: DIR/results/slidingTable.md, cubicCoupling.md (cubicCoupling.py) and the s
 Units: viscosity mu = 1, unit speeds (|v| = 1, |Omega| = 1), lengths in the smallest
 semi-axis.
 """
-import argparse
 import json
 import math
 import os
@@ -33,7 +32,7 @@ import numpy as np
 
 from squeezeFilm import (CONFIGURATIONS, FULL_GRID, MU, NORMAL, QUICK_GRID, Contact,
                          ReynoldsFilm, bisected, contact_grid, face_gaps, md_header, md_row,
-                         results_dir)
+                         results_dir, run_or_plot, configurations_in)
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
 from validationTools import provenance, read_csv, write_csv  # noqa: E402
@@ -478,14 +477,6 @@ def load_rows(out):
     return rows
 
 
-def configurations_in(rows):
-    names = []
-    for r in rows:
-        if r["config"] not in names:
-            names.append(r["config"])
-    return names
-
-
 def cpu_total(rows):
     """The CPU of the configurations (each row carries its configuration's)."""
     return sum(next(r["cpu_s"] for r in rows if r["config"] == n) for n in configurations_in(rows))
@@ -640,16 +631,7 @@ def plot(args):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__,
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    sub = ap.add_subparsers(dest="command", required=True)
-    r = sub.add_parser("run")
-    r.add_argument("--quick", action="store_true")
-    r.add_argument("--out")
-    p = sub.add_parser("plot")
-    p.add_argument("--out")
-    args = ap.parse_args()
-    return run(args) if args.command == "run" else plot(args)
+    return run_or_plot(__doc__, run, plot)
 
 
 if __name__ == "__main__":

@@ -845,8 +845,10 @@ def plot(args):
     return 0
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__,
+def run_or_plot(doc, run_step, plot_step):
+    """The command line of this folder's scripts: `run [--quick] [--out DIR]` or
+    `plot [--out DIR]`, dispatched to run_step or plot_step; their exit status."""
+    ap = argparse.ArgumentParser(description=doc,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = ap.add_subparsers(dest="command", required=True)
     r = sub.add_parser("run")
@@ -855,7 +857,11 @@ def main():
     p = sub.add_parser("plot")
     p.add_argument("--out")
     args = ap.parse_args()
-    return run(args) if args.command == "run" else plot(args)
+    return run_step(args) if args.command == "run" else plot_step(args)
+
+
+def main():
+    return run_or_plot(__doc__, run, plot)
 
 
 if __name__ == "__main__":

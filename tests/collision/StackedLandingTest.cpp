@@ -116,7 +116,7 @@ TEST(StackedLanding, TheTrailingBodyIsStoppedWithinTheOverlapCap) {
   }
 }
 
-TEST(StackedLanding, TheApproachBoundTradesTheCapAgainstTheSubSteps) {
+TEST(StackedLanding, AShorterApproachBoundStiffensTheLanding) {
   // the approach check's shortest contact time halved and doubled: a shorter
   // bound stiffens more (a smaller overlap), a longer one less (the cap
   // overrun of a spring left soft). The cost of a shorter bound shows where

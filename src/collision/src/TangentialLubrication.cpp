@@ -39,9 +39,9 @@ TangentialLubrication::TangentialLubrication(const Mat3& S1, const Mat3& S2, con
   S2_ = P_ * S2 * P_;
   const Mat3 K = S1_ + S2_;
   const Mat3 Kinv = inverseOnPlane(K, n);
-  M_ = inverseOnPlane(2 * K.trace() * P_ + K, n);
-  forceMap_ = (P_ - 2 * S1_ * Kinv) * M_;
-  torqueMap_ = Kinv * M_;
+  const Mat3 M = inverseOnPlane(2 * K.trace() * P_ + K, n);
+  forceMap_ = (P_ - 2 * S1_ * Kinv) * M;
+  torqueMap_ = Kinv * M;
 }
 
 TangentialLubrication TangentialLubrication::spheres(Scalar a1, Scalar a2, const Vec3& n,

@@ -106,9 +106,8 @@ class TangentialLubrication {
   Vec3 n_;
   Mat3 P_;
   Mat3 S1_, S2_;
-  Mat3 forceMap_;   ///< P - 2 S1 K^+, then times M
+  Mat3 forceMap_;   ///< (P - 2 S1 K^+) M
   Mat3 torqueMap_;  ///< K^+ M
-  Mat3 M_;
   Scalar radius_ = 0;
   Scalar mu_ = 0;
 };

@@ -35,7 +35,7 @@ Mat12 resistance(const TangentialLubrication& law, const Vec3& arm1, const Vec3&
   for (int k = 0; k < 12; ++k) {
     Vec3 motion[4] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
     motion[k / 3](k % 3) = 1;
-    const TangentialLubricationLoads l =
+    const FilmLoads l =
         law.loads(L, {arm1, motion[0], motion[1]}, {arm2, motion[2], motion[3]});
     const Vec3 loads[4] = {l.force1, l.torque1, -l.force1, l.torque2};
     for (int row = 0; row < 12; ++row) R[row][k] = loads[row / 3](row % 3);
@@ -45,7 +45,7 @@ Mat12 resistance(const TangentialLubrication& law, const Vec3& arm1, const Vec3&
 
 /// The loads on spheres of radii a1, a2 (a2 infinite: a plane at rest) with
 /// the unit normal d from 1 to 2, for the motions of their centres.
-TangentialLubricationLoads sphereLoads(Scalar a1, Scalar a2, const Vec3& d, Scalar logFactor,
+FilmLoads sphereLoads(Scalar a1, Scalar a2, const Vec3& d, Scalar logFactor,
                                        const Vec3& u1, const Vec3& omega1, const Vec3& u2,
                                        const Vec3& omega2) {
   const TangentialLubrication law = TangentialLubrication::spheres(a1, a2, d, mu);
@@ -108,7 +108,7 @@ TEST(TangentialLubrication, SphereAndPlaneGiveGoldmanCoxBrenner) {
   };
   const Scalar f0 = 6 * kPi * mu * a * L, t0 = 8 * kPi * mu * a * a * L;
   // translation U along x: drag (8/15) ln(a/h), torque (1/10) ln(a/h) in the rolling sense (+y)
-  TangentialLubricationLoads l = load(L, Vec3(1, 0, 0), Vec3::Zero());
+  FilmLoads l = load(L, Vec3(1, 0, 0), Vec3::Zero());
   EXPECT_NEAR(l.force1.x(), -f0 * 8 / 15, 1e-15);
   EXPECT_NEAR(l.torque1.y(), t0 / 10, 1e-15);
   EXPECT_NEAR(l.force1.y() + l.force1.z() + l.torque1.x() + l.torque1.z(), 0, 1e-18);
@@ -137,7 +137,7 @@ TEST(TangentialLubrication, TwoSpheresGiveJeffreyOnishi) {
     const Scalar YB = -1.0 / 5 * beta * (4 + beta) / (b1 * b1);
     const Scalar YC11 = 2.0 / 5 * beta / b1, YC12 = beta * beta / (10 * b1);
     const Scalar f0 = 6 * kPi * mu * a1 * L, t0 = 8 * kPi * mu * a1 * a1 * L;
-    TangentialLubricationLoads l = load(Vec3(0, 1, 0), Vec3::Zero(), Vec3::Zero());
+    FilmLoads l = load(Vec3(0, 1, 0), Vec3::Zero(), Vec3::Zero());
     EXPECT_NEAR(l.force1.y(), -f0 * YA, 1e-15 * f0) << beta;
     EXPECT_NEAR(l.torque1.z(), t0 * YB / 2, 1e-15 * t0) << "d x u = +z: T1 = -t0 E z" << beta;
     l = load(Vec3::Zero(), Vec3(0, 0, 1), Vec3::Zero());
@@ -166,7 +166,7 @@ TEST(TangentialLubrication, NoLoadUnderARigidMotionOfThePair) {
     const Vec3 c1 = -p.first.arm, c2 = -p.second.arm;  // the contact at the origin
     for (int k = 0; k < 5; ++k) {
       const Vec3 V(u(rng), u(rng), u(rng)), W(u(rng), u(rng), u(rng)), x0(u(rng), u(rng), u(rng));
-      const TangentialLubricationLoads l = law.loads(L, {p.first.arm, V + W.cross(c1 - x0), W},
+      const FilmLoads l = law.loads(L, {p.first.arm, V + W.cross(c1 - x0), W},
                                                      {p.second.arm, V + W.cross(c2 - x0), W});
       const Scalar scale = 6 * kPi * mu * 1e-3 * L * (V.norm() + W.norm());
       EXPECT_LT(l.force1.norm(), 1e-13 * scale);
@@ -184,7 +184,7 @@ TEST(TangentialLubrication, ExchangingTheBodiesGivesTheSameLoads) {
     const TangentialLubrication law = lawOf(p);
     const TangentialLubrication exchanged(p.second.curvature, p.first.curvature, -p.d, mu);
     const FilmSide one{p.first.arm, random(), random()}, two{p.second.arm, random(), random()};
-    const TangentialLubricationLoads a = law.loads(L, one, two), b = exchanged.loads(L, two, one);
+    const FilmLoads a = law.loads(L, one, two), b = exchanged.loads(L, two, one);
     const Scalar scale = a.force1.norm() + a.torque1.norm() / 1e-3;
     ASSERT_GT(scale, 0);
     EXPECT_LT((a.force1 + b.force1).norm(), 1e-13 * scale);

@@ -196,6 +196,52 @@ TEST(Ellipsoid, CurvatureTensorGivesTheSurfaceToSecondOrder) {
   }
 }
 
+TEST(Ellipsoid, SurfaceThirdDerivativeGivesTheSurfaceToThirdOrder) {
+  // the depth along -m at a tangent offset t is t^T S t/2 + C(t, t, t)/6 + O(|t|^4): the
+  // residual falls 16 x when t halves; C is symmetric in its three indices and zero on
+  // tangents at a vertex
+  std::mt19937_64 rng(19);
+  const Ellipsoid e(Vec3(2, 1, 0.7), Vec3(0.3, -0.2, 1), randomRotation(rng));
+  auto cubic = [](const ellipsoids::Tensor3& C, const Vec3& t) {
+    Scalar sum = 0;
+    for (int k = 0; k < 3; ++k) sum += t.dot(C[k] * t) * t(k);
+    return sum;
+  };
+  for (int i = 0; i < 20; ++i) {
+    const Vec3 m = randomUnit(rng);
+    const Vec3 x = e.support(m);
+    const ellipsoids::Mat3 S = e.curvatureTensor(x);
+    const ellipsoids::Tensor3 C = e.surfaceThirdDerivative(x);
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        for (int c = 0; c < 3; ++c) {
+          EXPECT_NEAR(C[c](a, b), C[a](b, c), 1e-12);
+          EXPECT_NEAR(C[c](a, b), C[b](c, a), 1e-12);
+        }
+    Vec3 t = randomUnit(rng);
+    t = (t - t.dot(m) * m).normalized();
+    Scalar previous = 0;
+    for (Scalar len : {1e-2, 5e-3}) {
+      const auto hit = e.intersectLine(x + len * t, -m);
+      ASSERT_EQ(hit.count, 2);
+      const Scalar error =
+          std::abs(hit.tEnter - len * len * t.dot(S * t) / 2 - len * len * len * cubic(C, t) / 6);
+      EXPECT_LT(error, 10 * len * len * len * len);
+      if (previous > 0) {
+        EXPECT_LT(error, previous / 12);  // fourth order: 16 x smaller
+      }
+      previous = error;
+    }
+  }
+  // at a vertex and on a sphere: no cubic term
+  const Ellipsoid vertexBody(Vec3(2, 1, 0.7), Vec3::Zero(), Quat::Identity());
+  const Ellipsoid sphere(Vec3(1.5, 1.5, 1.5), Vec3(1, 2, 3), randomRotation(rng));
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_LT(vertexBody.surfaceThirdDerivative(Vec3(0, 1, 0))[k].norm(), 1e-15);
+    EXPECT_LT(sphere.surfaceThirdDerivative(sphere.support(randomUnit(rng)))[k].norm(), 1e-14);
+  }
+}
+
 TEST(Ellipsoid, ProlateCurvatureTensorOnTheEquator) {
   // prolate (a, b, b) at (0, b, 0): curvature 1/b around the axis, b/a^2 along it
   const Scalar a = 3, b = 1;

@@ -1,4 +1,5 @@
 #include "collision/CollisionModel.hpp"
+#include "collision/CubicGapCoupling.hpp"
 #include "collision/GapParaboloid.hpp"
 #include "collision/RollingResistance.hpp"
 #include "collision/TangentialLubrication.hpp"
@@ -932,13 +933,35 @@ void CollisionModel::addTangentialLubrication(const std::vector<CollisionBody>& 
     side2.velocity = bodies[j].velocity;
     side2.angularVelocity = bodies[j].angularVelocity;
   }
-  const TangentialLubricationLoads l = law.loads(logFactor, side1, side2);
+  FilmLoads l = law.loads(logFactor, side1, side2);
+  Scalar rate = law.rate(logFactor, side1.arm, s1.inverseMass, s1.inverseInertia, side2.arm,
+                         s2.inverseMass, s2.inverseInertia);
+  // the coupling of normal and tangential motion from the gap's cubic terms:
+  // zero where both closest points are vertices, always on spheres and walls
+  const bool sphere1 = b1.shape.elongation() == 1;
+  const bool sphere2 = wall || bodies[j].shape.elongation() == 1;
+  if (!(sphere1 && sphere2)) {
+    const Tensor3 zero{Mat3::Zero(), Mat3::Zero(), Mat3::Zero()};
+    const CubicGapCoupling coupling(
+        S1, S2, sphere1 ? zero : b1.shape.surfaceThirdDerivative(p1),
+        sphere2 ? zero : bodies[j].shape.surfaceThirdDerivative(p2 - shift), n,
+        lubrication.viscosity());
+    const FilmLoads c = coupling.loads(logFactor, side1, side2);
+    l.force1 += c.force1;
+    l.torque1 += c.torque1;
+    l.torque2 += c.torque2;
+    const FilmLaw couplingLaw = [&coupling](const FilmSide& one, const FilmSide& two) {
+      return coupling.loads(1, one, two);
+    };
+    rate += logFactor * filmResistanceRate(couplingLaw, side1.arm, s1.inverseMass,
+                                           s1.inverseInertia, side2.arm, s2.inverseMass,
+                                           s2.inverseInertia);
+  }
   // explicit in the sub-step, scaled by the backward-Euler factor of the
-  // fastest rate the terms impose: close to 1 where the rate is small against
-  // 1/subDt, and never reversing the relative motion where it is not
-  const Scalar relax =
-      1 / (1 + subDt * law.rate(logFactor, side1.arm, s1.inverseMass, s1.inverseInertia,
-                                 side2.arm, s2.inverseMass, s2.inverseInertia));
+  // fastest rate the terms impose (the sum of the two laws' bounds): close to
+  // 1 where the rate is small against 1/subDt, and never reversing the
+  // relative motion where it is not
+  const Scalar relax = 1 / (1 + subDt * rate);
   force[i] += relax * l.force1;
   torque[i] += relax * l.torque1;
   if (!wall) {

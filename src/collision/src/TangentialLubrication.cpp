@@ -3,8 +3,6 @@
 #include "collision/GapParaboloid.hpp"
 #include "collision/Range.hpp"
 
-#include <Eigen/Eigenvalues>
-
 #include <cmath>
 #include <stdexcept>
 
@@ -16,12 +14,6 @@ namespace {
 Mat3 inverseOnPlane(const Mat3& T, const Vec3& n) {
   const Mat3 nn = n * n.transpose();
   return (T + nn).inverse() - nn;
-}
-
-/// the symmetric square root of a symmetric positive semi-definite tensor
-Mat3 squareRoot(const Mat3& A) {
-  if (A.isZero(0)) return Mat3::Zero();
-  return Eigen::SelfAdjointEigenSolver<Mat3>(0.5 * (A + A.transpose())).operatorSqrt();
 }
 }  // namespace
 
@@ -55,9 +47,9 @@ TangentialLubrication TangentialLubrication::spheres(Scalar a1, Scalar a2, const
                                viscosity);
 }
 
-TangentialLubricationLoads TangentialLubrication::loads(Scalar logFactor, const FilmSide& body1,
+FilmLoads TangentialLubrication::loads(Scalar logFactor, const FilmSide& body1,
                                                         const FilmSide& body2) const {
-  TangentialLubricationLoads out;
+  FilmLoads out;
   if (!(logFactor > 0)) return out;
   // the surfaces' velocities along the film at the closest points
   const Vec3 U1 = P_ * (body1.velocity + body1.angularVelocity.cross(body1.arm));
@@ -77,23 +69,9 @@ Scalar TangentialLubrication::rate(Scalar logFactor, const Vec3& arm1, Scalar in
                                    const Mat3& inverseInertia1, const Vec3& arm2,
                                    Scalar inverseMass2, const Mat3& inverseInertia2) const {
   if (!(logFactor > 0)) return 0;
-  // D: the square roots of the mobilities of (U1, Omega1, U2, Omega2)
-  const Mat3 D[4] = {Mat3::Identity() * std::sqrt(inverseMass1), squareRoot(inverseInertia1),
-                     Mat3::Identity() * std::sqrt(inverseMass2), squareRoot(inverseInertia2)};
-  // the Frobenius norm of D R D, column by column
-  Scalar sum = 0;
-  for (int k = 0; k < 12; ++k) {
-    FilmSide side[2];
-    side[0].arm = arm1;
-    side[1].arm = arm2;
-    Vec3* motion[4] = {&side[0].velocity, &side[0].angularVelocity, &side[1].velocity,
-                       &side[1].angularVelocity};
-    *motion[k / 3] = D[k / 3].col(k % 3);
-    const TangentialLubricationLoads l = loads(1, side[0], side[1]);
-    sum += (D[0] * l.force1).squaredNorm() + (D[1] * l.torque1).squaredNorm() +
-           (D[2] * l.force1).squaredNorm() + (D[3] * l.torque2).squaredNorm();
-  }
-  return logFactor * std::sqrt(sum);
+  const FilmLaw law = [this](const FilmSide& one, const FilmSide& two) { return loads(1, one, two); };
+  return logFactor * filmResistanceRate(law, arm1, inverseMass1, inverseInertia1, arm2,
+                                        inverseMass2, inverseInertia2);
 }
 
 }  // namespace collision

@@ -177,6 +177,21 @@ Mat3 Ellipsoid::curvatureTensor(const Vec3& surfacePoint) const {
   return (S + S.transpose()) / 2;
 }
 
+Tensor3 Ellipsoid::surfaceThirdDerivative(const Vec3& surfacePoint) const {
+  const Vec3 g = quadratic_ * (projectRadially(surfacePoint) - centre_);
+  const Scalar gg = g.squaredNorm();
+  const Vec3 m = g / std::sqrt(gg);
+  const Mat3 P = Mat3::Identity() - m * m.transpose();
+  Mat3 At = P * quadratic_ * P;
+  At = (At + At.transpose()) / 2;
+  const Vec3 b = P * quadratic_ * m;
+  Tensor3 C;
+  for (int k = 0; k < 3; ++k) {
+    C[k] = -(At * b(k) + b * At.col(k).transpose() + At.col(k) * b.transpose()) / gg;
+  }
+  return C;
+}
+
 Vec3 Ellipsoid::support(const Vec3& direction) const {
   const Scalar scale = direction.cwiseAbs().maxCoeff();
   if (!(scale > 0) || !std::isfinite(scale)) {

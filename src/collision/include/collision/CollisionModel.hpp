@@ -413,7 +413,8 @@ class CollisionModel {
   /// the lubrication coefficient of a damped pair at the gap h, and its
   /// integral over the gap from h0 to h1
   /// The logarithmic tangential lubrication terms of a pair (j < 0: a wall)
-  /// below its activation gap, explicit in the sub-step (TangentialLubrication.hpp):
+  /// below its activation gap and their coupling to the normal motion,
+  /// explicit in the sub-step (TangentialLubrication.hpp, CubicGapCoupling.hpp):
   /// S1, S2 the curvature tensors at the closest points p1, p2 (a wall: 0)
   void addTangentialLubrication(const std::vector<CollisionBody>& bodies,
                                 const Lubrication& lubrication, int i, int j, const Vec3& shift,

@@ -38,40 +38,24 @@
  * surfaces (validation/squeezeFilm, slidingFilm.py). Where they are not (a
  * tilted spheroid), the gap's cubic terms add a ln(1/h0) coupling between
  * normal and tangential motion, a normal force under sliding and a
- * tangential force under approach, of the order of these terms; the law,
- * built on the paraboloid, does not contain it (its closed form, checked
- * against the same numerics: validation/squeezeFilm, cubicCoupling.py).
+ * tangential force under approach, of the order of these terms, which the
+ * paraboloid does not contain: CubicGapCoupling adds it.
  *
  * The correction a resolved simulation adds below its activation gap x_act
  * is the part of these terms the mesh does not carry, L = ln(x_act/max(x,
  * x_sat)) (LubricationGapLaw::logFactor: the O(1) constants of the
  * resistance functions cancel in the difference).
  *
- * See also: GapParaboloid.hpp, LubricationLaw.hpp, CollisionModel,
+ * See also: GapParaboloid.hpp, CubicGapCoupling.hpp, LubricationLaw.hpp, CollisionModel,
  * docs/collisions.md.
  */
 #ifndef COLLISION_TANGENTIALLUBRICATION_HPP
 #define COLLISION_TANGENTIALLUBRICATION_HPP
 
+#include "collision/FilmResistanceRate.hpp"
 #include "collision/Types.hpp"
 
 namespace collision {
-
-/// The hydrodynamic loads of the terms on body 1 and 2 (force on 2: -force1),
-/// the torques about the bodies' centres.
-struct TangentialLubricationLoads {
-  Vec3 force1 = Vec3::Zero();
-  Vec3 torque1 = Vec3::Zero();
-  Vec3 torque2 = Vec3::Zero();
-};
-
-/// The motion of one body: the arm from its centre to its closest point, and
-/// its centre's velocity and angular velocity (a plane at rest: all zero).
-struct FilmSide {
-  Vec3 arm = Vec3::Zero();
-  Vec3 velocity = Vec3::Zero();
-  Vec3 angularVelocity = Vec3::Zero();
-};
 
 class TangentialLubrication {
  public:
@@ -88,14 +72,11 @@ class TangentialLubrication {
   static TangentialLubrication spheres(Scalar a1, Scalar a2, const Vec3& n, Scalar viscosity);
 
   /// The loads for the log factor L >= 0 (0 or less: none).
-  TangentialLubricationLoads loads(Scalar logFactor, const FilmSide& body1,
+  FilmLoads loads(Scalar logFactor, const FilmSide& body1,
                                    const FilmSide& body2) const;
 
   /// The largest rate at which the terms alone change the bodies' motion, for
-  /// the log factor L: the Frobenius norm (an upper bound of the largest
-  /// eigenvalue) of D R D, R the 12 x 12 resistance of loads() in the centres'
-  /// velocities and angular velocities for these arms, D = diag(sqrt(m1^-1),
-  /// sqrt(I1^-1), sqrt(m2^-1), sqrt(I2^-1)). Inverse masses 0: fixed.
+  /// the log factor L: filmResistanceRate of loads() (FilmResistanceRate.hpp).
   Scalar rate(Scalar logFactor, const Vec3& arm1, Scalar inverseMass1, const Mat3& inverseInertia1,
               const Vec3& arm2, Scalar inverseMass2, const Mat3& inverseInertia2) const;
 

@@ -14,6 +14,7 @@ using ellipsoids::kPi;
 using ellipsoids::Mat3;
 using ellipsoids::Quat;
 using ellipsoids::Scalar;
+using ellipsoids::Tensor3;
 using ellipsoids::Vec3;
 
 }  // namespace collision

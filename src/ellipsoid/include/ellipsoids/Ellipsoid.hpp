@@ -153,6 +153,19 @@ class Ellipsoid {
   Mat3 curvatureTensor(const Vec3& surfacePoint) const;
 
   /**
+   * @brief The third derivatives of the surface at a surface point, the term
+   *        after the curvature tensor: near the point the surface is
+   *        y = -(t^T S t/2 + C(t, t, t)/6) along -m for a tangent offset t,
+   *        with C_ijk = -(A'_ij b_k + A'_jk b_i + A'_ik b_j)/|g|^2, g = A x
+   *        (x the point relative to the centre), A' = P A P, b = P A m
+   *        (from f(x + t - y m) = 0 to third order in t). C vanishes where
+   *        A m is along m: at the vertices and everywhere on a sphere.
+   *        Returned as C[k](i, j) = C_ijk (world frame). The point is first
+   *        projected radially.
+   */
+  Tensor3 surfaceThirdDerivative(const Vec3& surfacePoint) const;
+
+  /**
    * @brief Support mapping s(n) = argmax_{x in E} n.x = r + P n / sqrt(n^T P n)
    *        (eqs. 2.19-2.20).
    * @param direction any non-zero finite vector (need not be unit)

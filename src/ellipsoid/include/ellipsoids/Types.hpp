@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -31,6 +32,8 @@ using Mat3 = Eigen::Matrix<Scalar, 3, 3>;
 using Quat = Eigen::Quaternion<Scalar>;
 using Vec4 = Eigen::Matrix<Scalar, 4, 1>;
 using Mat4 = Eigen::Matrix<Scalar, 4, 4>;
+/// A third-order tensor T_ijk, stored as T[k](i, j).
+using Tensor3 = std::array<Mat3, 3>;
 
 /// Machine epsilon of Scalar.
 constexpr Scalar kEps = std::numeric_limits<Scalar>::epsilon();

@@ -8,15 +8,15 @@ README.md).
     slidingFilm.py run [--quick] [--out DIR]
     slidingFilm.py plot [--out DIR]
 
-run:  body 1 of each configuration in four rigid motions (translation along e1, e2,
-      rotation about e1, e2 through its centre), body 2 at rest; the force and torque on
-      body 1 at the gaps h0 of SLOPE_GAPS, on the grid of squeezeFilm.py and on that grid
-      refined x2; the slopes d/d ln(1/h0) between neighbouring gaps, the law's and the
-      Gaussian spheres' coefficients. Writes DIR/results/sliding.csv (DIR: this folder, or
-      run-quick/ with --quick).
+run:  body 1 of each configuration in five rigid motions (translation along e1, e2,
+      rotation about e1, e2, n through its centre) and in the approach along n, body 2 at
+      rest; the force and torque on body 1 at the gaps h0 of SLOPE_GAPS, on the grid of
+      squeezeFilm.py and on that grid refined x2; the slopes d/d ln(1/h0) between
+      neighbouring gaps, the law's and the Gaussian spheres' coefficients. Writes
+      DIR/results/sliding.csv (DIR: this folder, or run-quick/ with --quick).
       --quick: two configurations on the coarse grid, two gaps (about a second).
-plot: DIR/results/slidingTable.md, cubicCoupling.md (cubicCoupling.py) and the sliding_* keys
-      of DIR/results/metrics.json (the other keys kept).
+plot: DIR/results/slidingTable.md, cubicCoupling.md and cubicCoupling.png (cubicCoupling.py)
+      and the sliding_* keys of DIR/results/metrics.json (the other keys kept).
 
 Units: viscosity mu = 1, unit speeds (|v| = 1, |Omega| = 1), lengths in the smallest
 semi-axis.
@@ -30,18 +30,46 @@ from pathlib import Path
 
 import numpy as np
 
-from squeezeFilm import (CONFIGURATIONS, FULL_GRID, MU, NORMAL, QUICK_GRID, Contact,
-                         ReynoldsFilm, bisected, contact_grid, face_gaps, md_header, md_row,
-                         results_dir, run_or_plot, configurations_in)
+from squeezeFilm import (CONFIGURATIONS, DIAGONAL_XZ, FULL_GRID, MU, NORMAL, OBLATE, PROLATE,
+                         QUICK_GRID, SPHERE2, Z, Contact, ReynoldsFilm, bisected,
+                         contact_grid, face_gaps, md_header, md_row, results_dir, run_or_plot,
+                         configurations_in, unit)
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
 from validationTools import provenance, read_csv, write_csv  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-# the configurations: the two with known sphere coefficients, then the spheroids
+# Configurations of the sliding film only (not in the squeeze campaign), in the format of
+# squeezeFilm.CONFIGURATIONS: two bodies whose closest points are vertices of neither, so
+# that both surfaces have third derivatives C1, C2 at the contact (a sphere: S2 but no C2)
+# and the coupling of normal and tangential motion (cubicCoupling.py) has its two-body
+# terms, D = C2 - C1 other than -Gamma and S2 - S1 other than -K:
+#  - the tilted prolate of prolateTilted against a sphere of radius 2: S2 = P/2, C2 = 0
+#    (the approach's tangential force: +1.42 from the term in S2 - S1, -2.45 from D's);
+#  - two such prolates with parallel axes (body 2 the point reflection of body 1 about the
+#    gap's midpoint): C2 = -C1, so Gamma = 0 (the gap is even, no odd pressure) and
+#    D = -2 C1 (the coupling is D's term alone);
+#  - the tilted prolate against an oblate whose axis is 45 degrees from n and 45 degrees
+#    about n from the prolate's tilt plane: no symmetry, every term and component of the
+#    coupling non-zero, and the principal axes of S1, S2, K all different (a twist).
+OBLATE_TILTED_AXIS = unit([0.5, 0.5, -math.sqrt(0.5)])
+SLIDING_ONLY_CONFIGURATIONS = [
+    ("prolateTiltedSphere2", "prolate 45 deg / sphere a=2", (PROLATE, DIAGONAL_XZ),
+     (SPHERE2, Z)),
+    ("prolatesTiltedParallel", "prolates 45 deg, parallel axes", (PROLATE, DIAGONAL_XZ),
+     (PROLATE, DIAGONAL_XZ)),
+    ("prolateOblateTilted", "prolate 45 deg / oblate 45 deg turned 45 deg about n",
+     (PROLATE, DIAGONAL_XZ), (OBLATE, OBLATE_TILTED_AXIS)),
+]
+# the configurations: the two with known sphere coefficients, then the spheroids of the
+# squeeze campaign, then those of the sliding film only
 SLIDING_CONFIGURATIONS = ("spherePlane", "sphere1Sphere2", "prolateBroadside",
                           "prolateTilted", "oblateEdge", "prolatesParallel",
-                          "prolatesCrossed", "prolates45", "prolateTipSide")
+                          "prolatesCrossed", "prolates45", "prolateTipSide",
+                          *(c[0] for c in SLIDING_ONLY_CONFIGURATIONS))
+# (name, label, body 1, body 2) of every configuration of SLIDING_CONFIGURATIONS, in order
+SLIDING_CASES = [c for name in SLIDING_CONFIGURATIONS
+                 for c in CONFIGURATIONS + SLIDING_ONLY_CONFIGURATIONS if c[0] == name]
 QUICK_CONFIGURATIONS = ("spherePlane", "prolateTilted")
 # the slope between the two smallest gaps is the measured coefficient; the one between the
 # two larger shows how far it has converged in h0
@@ -51,10 +79,13 @@ QUICK_GAPS = (1e-3, 1e-4)
 MOTIONS = (("translation_e1", "translation along e1", 0, None),
            ("translation_e2", "translation along e2", 1, None),
            ("rotation_e1", "rotation about e1", None, 0),
-           ("rotation_e2", "rotation about e2", None, 1))
-# body 1 approaching body 2 along n at unit speed: only the ln(1/h0) term of its
-# tangential force is recorded (the reciprocal of the sliding motions' normal force)
+           ("rotation_e2", "rotation about e2", None, 1),
+           ("rotation_n", "rotation about n", None, 2))
+# body 1 approaching body 2 along n at unit speed: the ln(1/h0) terms of its tangential
+# force and of its torque about p1 are recorded (free of the squeeze force's 1/h0, the
+# reciprocals of the other motions' normal force; cubicCoupling.py's closed form)
 APPROACH = ("approach_n", "approach along n", 2, None)
+APPROACH_COMPONENTS = ("Fe1", "Fe2", "Te1", "Te2", "Tn")
 # components compared with the law: the tangential force, the torque about c1
 COMPONENTS = ("Fe1", "Fe2", "Te1", "Te2", "Tn")
 # a component is dominant for a motion if the law's value exceeds this share of the
@@ -123,7 +154,8 @@ def rigid_motion(contact, motion, frame):
     """(velocity of c1, angular velocity) of body 1 for one of MOTIONS. A rotation turns
     about the axis through c1, plus the translation along n that keeps p1 from
     approaching body 2 (the normal approach is the squeeze film, squeezeFilm.py; it is not
-    zero only where p1 - c1 is not along n)."""
+    zero only where p1 - c1 is not along n and the axis is not n: the rotation about n
+    moves p1 along the tangent plane, by n x (p1 - c1))."""
     _, _, along, about = motion
     velocity, omega = np.zeros(3), np.zeros(3)
     if along is not None:
@@ -333,10 +365,37 @@ def relative_error_pct(model, reference):
     return 100.0 * (model - reference) / abs(reference)
 
 
-def dominant(law):
-    """The indices of COMPONENTS whose law value exceeds DOMINANT_SHARE of the largest."""
+def dominant(law, scale):
+    """The indices of COMPONENTS whose law value exceeds DOMINANT_SHARE of the largest;
+    none where the law is zero for every component (below 1e-9 of scale, the largest law
+    value of the configuration's motions: the rotation about n where p1 - c1 is along n)."""
     values = np.abs(law[:len(COMPONENTS)])
+    if values.max() <= 1e-9 * scale:
+        return []
     return [i for i in range(len(COMPONENTS)) if values[i] > DOMINANT_SHARE * values.max()]
+
+
+def torque_about_p1(values, arm, frame):
+    """Rows of components() (force, torque about c1) with the torque taken about p1:
+    T - (p1 - c1) x F."""
+    out = np.array(values, dtype=float)
+    force = np.outer(out[:, 0], frame[:, 0]) + np.outer(out[:, 1], frame[:, 1]) \
+        + np.outer(out[:, 5], frame[:, 2])
+    moment = np.cross(arm, force) @ frame
+    out[:, 2:5] -= moment
+    return out
+
+
+def approach_reciprocal(approach, arm, frame, velocity, omega):
+    """The normal force that the symmetry of the film's resistance gives a motion (velocity
+    of c1, omega) of body 1 from the ln(1/h0) terms of its approach along n at unit speed
+    (components() with the torque about p1): F.v + (T_p1 + (p1 - c1) x F).Omega, F the
+    approach's tangential force. Its normal force (the squeeze film) drops out: a motion
+    of MOTIONS does not move p1 along n, and the velocity of c1 along n and the moment of
+    the normal force about c1 cancel."""
+    force = approach[0] * frame[:, 0] + approach[1] * frame[:, 1]
+    torque = approach[2] * frame[:, 0] + approach[3] * frame[:, 1] + approach[4] * frame[:, 2]
+    return float(force @ velocity + (torque + np.cross(arm, force)) @ omega)
 
 
 def run_configuration(name, label, body1, body2, spec, gaps, stamp):
@@ -355,11 +414,21 @@ def run_configuration(name, label, body1, body2, spec, gaps, stamp):
     G = curvature_tensors(reference, gaussian=True)
     k1, k2 = reference.k
     last = len(gaps) - 2
-    approach = slope(base[APPROACH[0]], gaps, last)
+    # the approach: force and torque about p1 (the squeeze force's moment about c1 out)
+    approach_base = torque_about_p1(base[APPROACH[0]], arm, frame)
+    approach_fine = torque_about_p1(fine[APPROACH[0]], arm, frame)
+    approach = slope(approach_base, gaps, last)
+    approach_record = {}
+    for i, c in enumerate(APPROACH_COMPONENTS):
+        approach_record[f"approach_{c}_num"] = approach[i]
+        approach_record[f"approach_{c}_num_grid2"] = slope(approach_fine, gaps, last)[i]
+        approach_record[f"approach_{c}_num_extrapolated"] = (
+            log_coefficient_fit(approach_fine[:, i], gaps) if len(gaps) == 3 else None)
+    motions = [rigid_motion(reference, motion, frame) for motion in MOTIONS]
+    laws = [components(*law_loads(*S, NORMAL, arm, v, w), frame) for v, w in motions]
+    law_scale = max(np.abs(law[:len(COMPONENTS)]).max() for law in laws)
     rows = []
-    for motion in MOTIONS:
-        velocity, omega = rigid_motion(reference, motion, frame)
-        law = components(*law_loads(*S, NORMAL, arm, velocity, omega), frame)
+    for motion, (velocity, omega), law in zip(MOTIONS, motions, laws):
         gauss = components(*law_loads(*G, NORMAL, arm, velocity, omega), frame)
         values, values_fine = base[motion[0]], fine[motion[0]]
         num = slope(values, gaps, last)
@@ -384,9 +453,22 @@ def run_configuration(name, label, body1, body2, spec, gaps, stamp):
             row[f"{c}_gauss"] = gauss[i]
             if c.startswith("T"):
                 row[f"{c}_normal_moment"] = normal_moment[i]
-        chosen = dominant(law)
+        chosen = dominant(law, law_scale)
         row["dominant"] = " ".join(COMPONENTS[i] for i in chosen)
         less_normal = num - normal_moment
+        row["Fn_reciprocal"] = approach_reciprocal(approach, arm, frame, velocity, omega)
+        row["law_scale"] = law_scale
+        # every component, the law against num less the F.n moment, over the scale
+        row["law_max_abs_difference_pct"] = 100.0 * np.abs(
+            law[:len(COMPONENTS)] - less_normal[:len(COMPONENTS)]).max() / law_scale
+        if not chosen:
+            # the law is zero: the film's coefficients against the configuration's scale
+            row["law_zero_max_residual_pct"] = 100.0 * np.abs(
+                less_normal[:len(COMPONENTS)]).max() / law_scale
+            row.update(stamp, **approach_record, cells=max(cells),
+                       cells_grid2=max(cells_fine), cpu_s=cpu)
+            rows.append(row)
+            continue
         row["law_max_error_pct"] = max(abs(relative_error_pct(law[i], num[i])) for i in chosen)
         row["gauss_max_error_pct"] = max(abs(relative_error_pct(gauss[i], num[i]))
                                          for i in chosen)
@@ -401,9 +483,8 @@ def run_configuration(name, label, body1, body2, spec, gaps, stamp):
                 abs(relative_error_pct(law[i], extrapolated_less[i])) for i in chosen)
             row["gap_change_max_pct"] = max(abs(relative_error_pct(num_large[i], num[i]))
                                             for i in chosen)
-        row.update(approach_Fe1_num=approach[0], approach_Fe2_num=approach[1],
-                   cells=max(cells), cells_grid2=max(cells_fine), cpu_s=cpu)
-        row.update(stamp)
+        row.update(stamp, **approach_record, cells=max(cells), cells_grid2=max(cells_fine),
+                   cpu_s=cpu)
         rows.append(row)
     return rows
 
@@ -416,11 +497,14 @@ def result_fields():
                    f"{c}_law", f"{c}_gauss"]
         if c.startswith("T"):
             fields.append(f"{c}_normal_moment")
-    return fields + ["dominant", "law_max_error_pct", "gauss_max_error_pct",
-                     "law_max_error_less_normal_moment_pct", "law_max_error_extrapolated_pct",
-                     "gap_change_max_pct", "grid_change_max_pct", "approach_Fe1_num",
-                     "approach_Fe2_num", "cells", "cells_grid2",
-                     "cpu_s", "host", "date", "commit"]
+    fields += ["Fn_reciprocal", "law_scale", "law_max_abs_difference_pct", "dominant",
+               "law_max_error_pct", "gauss_max_error_pct", "law_max_error_less_normal_moment_pct",
+               "law_max_error_extrapolated_pct", "gap_change_max_pct", "grid_change_max_pct",
+               "law_zero_max_residual_pct"]
+    for c in APPROACH_COMPONENTS:
+        fields += [f"approach_{c}_num", f"approach_{c}_num_grid2",
+                   f"approach_{c}_num_extrapolated"]
+    return fields + ["cells", "cells_grid2", "cpu_s", "host", "date", "commit"]
 
 
 def run(args):
@@ -432,12 +516,17 @@ def run(args):
     gaps = QUICK_GAPS if quick else SLOPE_GAPS
     wanted = QUICK_CONFIGURATIONS if quick else SLIDING_CONFIGURATIONS
     rows = []
-    for name, label, body1, body2 in CONFIGURATIONS:
+    for name, label, body1, body2 in SLIDING_CASES:
         if name not in wanted:
             continue
         mine = run_configuration(name, label, body1, body2, spec, gaps, stamp)
         rows += mine
         for r in mine:
+            if r.get("law_zero_max_residual_pct") is not None:
+                print(f"{name:18s} {r['motion']:15s} law zero: largest |num| "
+                      f"{r['law_zero_max_residual_pct']:.4f} % of the law's scale  "
+                      f"F.n {r['Fn_num']:+.4f}", flush=True)
+                continue
             print(f"{name:18s} {r['motion']:15s} law {r['law_max_error_pct']:8.3f} %  "
                   f"less normal moment {r['law_max_error_less_normal_moment_pct']:6.3f} %  "
                   f"Gaussian spheres {r['gauss_max_error_pct']:8.2f} %  grid x2 "
@@ -451,12 +540,18 @@ def run(args):
 
 def quick_verdict(rows):
     """The smoke check: the sphere and the plane's coefficients to 3 %, the law to 5 % for
-    the others once the normal force's moment is set aside."""
-    bad = [r for r in rows if r["config"] == "spherePlane" and r["law_max_error_pct"] > 3.0]
-    bad += [r for r in rows if r["law_max_error_less_normal_moment_pct"] > 5.0]
+    the others once the normal force's moment is set aside, and where the law is zero (the
+    sphere's rotation about n) no coefficient above 1 % of the law's scale."""
+    def above(r, key, limit):
+        return r.get(key) is not None and r[key] > limit
+
+    bad = [r for r in rows if r["config"] == "spherePlane" and above(r, "law_max_error_pct", 3.0)]
+    bad += [r for r in rows if above(r, "law_max_error_less_normal_moment_pct", 5.0)
+            or above(r, "law_zero_max_residual_pct", 1.0)]
     for b in bad:
-        print("FAILED:", b["config"], b["motion"], b["law_max_error_pct"],
-              b["law_max_error_less_normal_moment_pct"], file=sys.stderr)
+        print("FAILED:", b["config"], b["motion"], b.get("law_max_error_pct"),
+              b.get("law_max_error_less_normal_moment_pct"), b.get("law_zero_max_residual_pct"),
+              file=sys.stderr)
     return 1 if bad else 0
 
 
@@ -497,6 +592,9 @@ def metrics_of(rows):
          "sliding_gap_change_pct": largest(rows, "gap_change_max_pct"),
          "sliding_grid_change_pct": largest(rows, "grid_change_max_pct"),
          "sliding_normal_force_max_abs": max(abs(r["Fn_num"]) for r in rows),
+         "sliding_law_zero_max_residual_pct": largest(rows, "law_zero_max_residual_pct"),
+         "sliding_twist_law_max_abs_difference_pct": largest(
+             [r for r in rows if r["motion"] == "rotation_n"], "law_max_abs_difference_pct"),
          "sliding_cpu_s_total": cpu_total(rows)}
     spheres = [r for r in rows if r["config"] in ("spherePlane", "sphere1Sphere2")]
     if spheres:
@@ -520,8 +618,8 @@ def write_table(path, rows):
              "",
              "Produced by `validation/squeezeFilm/slidingFilm.py plot` from "
              "results/sliding.csv. mu = 1, unit speeds, lengths in the smallest semi-axis. "
-             "Body 1 moves (translation along e1 or e2, rotation about e1 or e2 through its "
-             "centre c1 with p1 kept from approaching), body 2 is at rest; components of the "
+             "Body 1 moves (translation along e1 or e2, rotation about e1, e2 or n through "
+             "its centre c1 with p1 kept from approaching), body 2 is at rest; components of the "
              "force F on body 1 and of its torque T about c1 in the frame (e1, e2, n). "
              "num: the slope dF/d ln(1/h0) between the two smallest gaps on the grid of "
              "squeezeFilm.py" + (
@@ -538,11 +636,14 @@ def write_table(path, rows):
              "",
              "less F.n moment: the numerical torque less the moment about c1 of the "
              "numerical normal force placed at p1, (p1 - c1) x (F.n) n, which the law does "
-             "not have (non-zero for the tilted prolate only).",
+             "not have (non-zero where F.n is and p1 - c1 is not along n: the configurations "
+             "with the tilted prolate as body 1). law zero: where the law is zero for every "
+             "component (the rotation about n with p1 - c1 along n), the largest |num| over "
+             "the configuration's largest law coefficient.",
              ""]
     lines += md_header(["configuration", "k1", "k2", "R", "law [%]", "less F.n moment [%]",
                         "vs extrap. [%]", "Gauss [%]", "1e-3/1e-4 [%]", "grid x2 [%]",
-                        "cells", "CPU [s]"])
+                        "law zero [%]", "cells", "CPU [s]"])
     for name in configurations_in(rows):
         mine = [r for r in rows if r["config"] == name]
         r0 = mine[0]
@@ -554,6 +655,7 @@ def write_table(path, rows):
             number(largest(mine, "gauss_max_error_pct"), 1),
             number(largest(mine, "gap_change_max_pct"), 3),
             number(largest(mine, "grid_change_max_pct"), 3),
+            number(largest(mine, "law_zero_max_residual_pct"), 4),
             int(r0["cells"]), f"{r0['cpu_s']:.1f}"]))
     lines += ["", "## Every dominant component", ""]
     lines += md_header(["configuration", "motion", "component", "num", "1e-3/1e-4 [%]",
@@ -571,39 +673,71 @@ def write_table(path, rows):
                 f"{r[f'{c}_law']:+.4f}", f"{relative_error_pct(r[f'{c}_law'], num):+.3f}",
                 f"{r[f'{c}_gauss']:+.4f}",
                 f"{relative_error_pct(r[f'{c}_gauss'], num):+.1f}"]))
+    lines += twist_section(rows)
     scale = max(abs(r[f"{c}_num"]) for r in rows for c in COMPONENTS)
     normal = [r for r in rows if abs(r["Fn_num"]) > 1e-4 * scale]
     if normal:
         lines += ["", "## The normal force", "",
                   "The law has no normal force (F1 along the tangent plane); the film's F.n "
-                  "has a ln(1/h0) term in the motions listed here. reciprocal: the ln(1/h0) "
-                  "coefficient of the force along the motion on body 1 approaching body 2 at "
-                  "unit speed along n (equal to F.n of the translation if the film's "
-                  "resistance is symmetric). The moment of F.n about c1 at p1, "
-                  "(p1 - c1) x (F.n) n, and the torque less that moment against the law:", ""]
+                  "has a ln(1/h0) term in the motions listed here. reciprocal: the normal "
+                  "force that the symmetry of the film's resistance gives the motion from the "
+                  "ln(1/h0) terms of body 1 approaching body 2 at unit speed along n, F.v + "
+                  "(T_p1 + (p1 - c1) x F).Omega (F the approach's tangential force, T_p1 its "
+                  "torque about p1; for a translation the approach's force along it).", ""]
         lines += md_header(["configuration", "motion", "F.n num", "reciprocal",
-                            "tangential arm", "component", "T num", "moment of F.n",
-                            "T less moment", "law", "law [%]"])
+                            "difference [%]"])
         for r in normal:
-            along = {"translation_e1": "approach_Fe1_num",
-                     "translation_e2": "approach_Fe2_num"}.get(r["motion"])
+            lines.append(md_row([r["label"], MOTION_LABELS[r["motion"]], f"{r['Fn_num']:+.4f}",
+                                 f"{r['Fn_reciprocal']:+.4f}",
+                                 f"{relative_error_pct(r['Fn_reciprocal'], r['Fn_num']):+.3f}"]))
+        lines += ["", "The moment of F.n about c1 at p1, (p1 - c1) x (F.n) n, and the torque "
+                  "less that moment against the law (dominant torque components of the "
+                  "motions with a normal force and a tangential arm |P (p1 - c1)|):", ""]
+        lines += md_header(["configuration", "motion", "F.n num", "tangential arm",
+                            "component", "T num", "moment of F.n", "T less moment", "law",
+                            "law [%]"])
+        for r in normal:
             for c in r["dominant"].split():
-                if not c.startswith("T"):
+                if not c.startswith("T") or r["arm_tangential"] < 1e-9:
                     continue
                 less = r[f"{c}_num"] - r[f"{c}_normal_moment"]
                 lines.append(md_row([
                     r["label"], MOTION_LABELS[r["motion"]], f"{r['Fn_num']:+.4f}",
-                    "-" if along is None else f"{r[along]:+.4f}",
                     f"{r['arm_tangential']:.4f}", c, f"{r[f'{c}_num']:+.4f}",
                     f"{r[f'{c}_normal_moment']:+.4f}", f"{less:+.4f}",
                     f"{r[f'{c}_law']:+.4f}",
                     f"{relative_error_pct(r[f'{c}_law'], less):+.3f}"]))
-        lines += ["", "tangential arm: |P (p1 - c1)|."]
     first = rows[0]
     lines += ["", f"Run on {first['host']}, {first['date']}, commit {first['commit']}; CPU "
               f"{cpu_total(rows):.0f} s in all.", ""]
     with open(path, "w") as f:
         f.write("\n".join(lines))
+
+
+def twist_section(rows):
+    """The lines of the table of the rotation about n: every component, num (the torque less
+    the F.n moment) against the law."""
+    twist = [r for r in rows if r["motion"] == "rotation_n"]
+    if not twist:
+        return []
+    lines = ["", "## Rotation about n (twist)", "",
+             "Body 1 turning at unit speed about n through c1. The law has no term in the "
+             "normal component of Omega (w has n x Omega); it sees only the sliding of p1, "
+             "U1 = n x (p1 - c1), zero where p1 - c1 is along n. Each component: num (the "
+             "torque less the F.n moment) / law; largest difference: max |law - num| over "
+             "the five components, in % of the configuration's largest law coefficient "
+             "(law scale).", ""]
+    lines += md_header(["configuration", "tangential arm", *COMPONENTS, "largest difference [%]",
+                        "law scale", "F.n num"])
+    for r in twist:
+        cells = []
+        for c in COMPONENTS:
+            less = r[f"{c}_num"] - (r[f"{c}_normal_moment"] if c.startswith("T") else 0.0)
+            cells.append(f"{less:+.4f} / {r[f'{c}_law']:+.4f}")
+        lines.append(md_row([r["label"], f"{r['arm_tangential']:.4f}", *cells,
+                             f"{r['law_max_abs_difference_pct']:.3f}",
+                             f"{r['law_scale']:.3f}", f"{r['Fn_num']:+.4f}"]))
+    return lines
 
 
 def plot(args):

@@ -9,6 +9,7 @@
 #include "ellipsoids/Ellipsoid.hpp"
 #include "collision/RigidBody.hpp"
 #include "collision/TangentialLubrication.hpp"
+#include "FilmLawSupport.hpp"
 #include "ModelSetup.hpp"
 
 #include <gtest/gtest.h>
@@ -26,21 +27,9 @@ namespace {
 constexpr Scalar kInf = std::numeric_limits<Scalar>::infinity();
 constexpr Scalar mu = 0.01, L = 2.5;
 
-/// The 12 x 12 resistance matrix R (row-major): (F1, T1, F2, T2) = R (U1, Omega1, U2, Omega2).
-/// Plain arrays: the product q.R q is all the tests need.
-using Mat12 = std::array<std::array<Scalar, 12>, 12>;
-
 Mat12 resistance(const TangentialLubrication& law, const Vec3& arm1, const Vec3& arm2) {
-  Mat12 R{};
-  for (int k = 0; k < 12; ++k) {
-    Vec3 motion[4] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
-    motion[k / 3](k % 3) = 1;
-    const FilmLoads l =
-        law.loads(L, {arm1, motion[0], motion[1]}, {arm2, motion[2], motion[3]});
-    const Vec3 loads[4] = {l.force1, l.torque1, -l.force1, l.torque2};
-    for (int row = 0; row < 12; ++row) R[row][k] = loads[row / 3](row % 3);
-  }
-  return R;
+  return loadMatrix([&](const FilmSide& one, const FilmSide& two) { return law.loads(L, one, two); },
+                    arm1, arm2);
 }
 
 /// The loads on spheres of radii a1, a2 (a2 infinite: a plane at rest) with
@@ -51,28 +40,6 @@ FilmLoads sphereLoads(Scalar a1, Scalar a2, const Vec3& d, Scalar logFactor,
   const TangentialLubrication law = TangentialLubrication::spheres(a1, a2, d, mu);
   const FilmSide second = std::isfinite(a2) ? FilmSide{-a2 * d, u2, omega2} : FilmSide{};
   return law.loads(logFactor, {a1 * d, u1, omega1}, second);
-}
-
-/// A spheroid (semi-axes a, b, b along the unit axis e) touching the point
-/// `contact` with its outward normal there along m: its curvature tensor at
-/// that point and the arm from its centre to it.
-struct Touching {
-  Mat3 curvature;
-  Vec3 arm;
-};
-Touching spheroidAt(Scalar a, Scalar b, const Vec3& e, const Vec3& m) {
-  const Quat q = Quat::FromTwoVectors(Vec3::UnitX(), e);
-  // the support point of the centred spheroid in the direction m
-  const ellipsoids::Ellipsoid centred(Vec3(a, b, b), Vec3::Zero(), q);
-  const Vec3 point = centred.support(m);
-  return {centred.curvatureTensor(point), point};
-}
-
-Scalar largestEntry(const Mat12& R) {
-  Scalar m = 0;
-  for (const auto& row : R)
-    for (const Scalar v : row) m = std::max(m, std::abs(v));
-  return m;
 }
 
 /// Two prolate spheroids (Ar 2.5 and 1.5) touching at the origin with the
@@ -159,37 +126,22 @@ TEST(TangentialLubrication, TwoSpheresGiveJeffreyOnishi) {
 
 TEST(TangentialLubrication, NoLoadUnderARigidMotionOfThePair) {
   // the pair translating and rotating as one rigid body about any point
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<Scalar> u(-1, 1);
   for (const SpheroidPair& p : kPairs) {
     const TangentialLubrication law = lawOf(p);
-    const Vec3 c1 = -p.first.arm, c2 = -p.second.arm;  // the contact at the origin
-    for (int k = 0; k < 5; ++k) {
-      const Vec3 V(u(rng), u(rng), u(rng)), W(u(rng), u(rng), u(rng)), x0(u(rng), u(rng), u(rng));
-      const FilmLoads l = law.loads(L, {p.first.arm, V + W.cross(c1 - x0), W},
-                                                     {p.second.arm, V + W.cross(c2 - x0), W});
-      const Scalar scale = 6 * kPi * mu * 1e-3 * L * (V.norm() + W.norm());
-      EXPECT_LT(l.force1.norm(), 1e-13 * scale);
-      EXPECT_LT(l.torque1.norm(), 1e-13 * scale);
-      EXPECT_LT(l.torque2.norm(), 1e-13 * scale);
-    }
+    expectNoLoadUnderRigidMotion(
+        [&](const FilmSide& one, const FilmSide& two) { return law.loads(L, one, two); },
+        p.first.arm, p.second.arm, 6 * kPi * mu * 1e-3 * L, 3);
   }
 }
 
 TEST(TangentialLubrication, ExchangingTheBodiesGivesTheSameLoads) {
-  std::mt19937 rng(5);
-  std::normal_distribution<Scalar> normal;
-  auto random = [&]() { return Vec3(normal(rng), normal(rng), normal(rng)); };
   for (const SpheroidPair& p : kPairs) {
     const TangentialLubrication law = lawOf(p);
     const TangentialLubrication exchanged(p.second.curvature, p.first.curvature, -p.d, mu);
-    const FilmSide one{p.first.arm, random(), random()}, two{p.second.arm, random(), random()};
-    const FilmLoads a = law.loads(L, one, two), b = exchanged.loads(L, two, one);
-    const Scalar scale = a.force1.norm() + a.torque1.norm() / 1e-3;
-    ASSERT_GT(scale, 0);
-    EXPECT_LT((a.force1 + b.force1).norm(), 1e-13 * scale);
-    EXPECT_LT((a.torque1 - b.torque2).norm(), 1e-16 * scale);
-    EXPECT_LT((a.torque2 - b.torque1).norm(), 1e-16 * scale);
+    expectSameLoadsExchanged(
+        [&](const FilmSide& one, const FilmSide& two) { return law.loads(L, one, two); },
+        [&](const FilmSide& one, const FilmSide& two) { return exchanged.loads(L, one, two); },
+        p.first.arm, p.second.arm, 1e-3, 5);
   }
 }
 
@@ -222,11 +174,9 @@ TEST(TangentialLubrication, OneSymmetricDissipativeResistance) {
         v = normal(rng);
         qq += v * v;
       }
-      Scalar power = 0;
-      for (int row = 0; row < 12; ++row)
-        for (int col = 0; col < 12; ++col) power += q[row] * R[row][col] * q[col];
-      EXPECT_LE(power, 1e-12 * scale * qq) << which;
-      largestDissipation = std::max(largestDissipation, -power);
+      const Scalar p = power(R, q);
+      EXPECT_LE(p, 1e-12 * scale * qq) << which;
+      largestDissipation = std::max(largestDissipation, -p);
     }
     EXPECT_GT(largestDissipation, 0) << which;
     ++which;

@@ -32,7 +32,9 @@
  * and Brenner (1967) (tests/collision/TangentialLubricationTest.cpp checks
  * both for every term); for spheroids they take the two surfaces' principal
  * directions and curvatures into account, to the same leading order in the
- * gap. Normal rotation (twist) has no logarithmic term. The Reynolds
+ * gap. Normal rotation (twist) has no logarithmic tangential force or
+ * torque; where the surfaces' principal axes differ it has a logarithmic
+ * normal force, which CubicGapCoupling carries. The Reynolds
  * equation solved on the exact gap of spheroids and planes gives these
  * coefficients to 0.6 % where the closest points are vertices of the
  * surfaces (validation/squeezeFilm, slidingFilm.py). Where they are not (a

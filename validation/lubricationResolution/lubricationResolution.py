@@ -27,7 +27,11 @@ with the leading term of the squeeze film on the gap's paraboloid, F_par = 6 pi 
 (R* from the principal curvatures of the body at its closest point: 0.894 broadside, 0.25
 tip-on), and with the Reynolds equation on the exact gap (validation/squeezeFilm): the check
 that resolved flow plus correction carry the spheroid's film at every resolution and tend to
-the paraboloid's force as the gap closes; rows in results/spheroidRuns.csv.
+the paraboloid's force as the gap closes; rows in results/spheroidRuns.csv. With
+`--shape prolatePairCrossed` two such spheroids side by side, their axes crossed (along x and
+y), approach each other (each at U) at a gap centred 6 d above the floor: the same comparison
+for a spheroid pair, whose paraboloid (R* = 0.4, at the closing speed 2U) the spheres of the
+Gaussian radii (R* = 0.5) miss by 56 % in the force; rows in the same file.
 
     lubricationResolution.py run [--cpd N] [--gap G ...] [--motion approach|sliding] [--quick]
                                  [--force] [--rescore] [--shape S]
@@ -92,7 +96,14 @@ MOTIONS = {"approach": ((0.0, 0.0, -U), 2), "sliding": ((U, 0.0, 0.0), 0)}
 SHAPES = {"sphere": ((A, A, A), A),
           "prolateBroadside": ((1.0, 0.5, 0.5), math.sqrt(2 / (math.sqrt(2 * 0.5) * 2.5))),
           "prolateTipOn": ((0.5, 0.5, 1.0), math.sqrt(2 / (math.sqrt(4 * 4) * 8))),
-          "spherePair": ((A, A, A), A / 2)}
+          "spherePair": ((A, A, A), A / 2),
+          "prolatePairCrossed": ((1.0, 0.5, 0.5), 0.4)}
+# the pairs: two bodies approaching each other, each at U (the closing speed 2U), the second
+# body's semi-axes. Crossed prolates AR 2 side by side (axes along x and y): at the closest
+# points each surface has curvatures 2 across its axis and 0.5 along it, so K = S1 + S2 =
+# diag(2.5, 2.5) and R*^2 = 2/(2.5 x 5) = 0.16 (the spheres of the Gaussian radii, R_G = 1
+# each: 0.25)
+PAIR_SECOND = {"spherePair": (A, A, A), "prolatePairCrossed": (0.5, 1.0, 0.5)}
 # two equal spheres approaching each other (each at U), their gap centred PAIR_MID above the
 # floor: compared with the exact series (sphereWallStokes.two_spheres_approaching); rows in
 # results/pairRuns.csv, the columns of runs.csv
@@ -106,7 +117,7 @@ SPHEROID_FIELDS = ["name", "shape", "cpd", "gap", "cells", "dt", "steps", "F_hyd
                    "reynolds_exact_gap_ratio", "unsteadiness", "cpu_s", "host", "date", "commit"]
 # the squeezeFilm configuration of each spheroid (its lengths in the smallest semi-axis, b)
 SQUEEZE_FILM_CONFIG = {"sphere": "spherePlane", "prolateBroadside": "prolateBroadside",
-                       "prolateTipOn": "prolateTip"}
+                       "prolateTipOn": "prolateTip", "prolatePairCrossed": "prolatesCrossed"}
 SQUEEZE_FILM_CSV = os.path.join(HERE, "..", "squeezeFilm", "results", "results.csv")
 
 
@@ -132,14 +143,16 @@ def body_entry(name, semi, centre, velocity):
 def write_case(case, cpd, gap, end_time, motion="approach", box_half=BOX_HALF, shape="sphere"):
     h = 1.0 / cpd
     semi = SHAPES[shape][0]
-    fine_x = math.ceil((semi[0] + 0.25) / h) * h
-    fine_y = math.ceil((semi[1] + 0.25) / h) * h
-    if shape == "spherePair":
+    second = PAIR_SECOND.get(shape, semi)
+    fine_x = math.ceil((max(semi[0], second[0]) + 0.25) / h) * h
+    fine_y = math.ceil((max(semi[1], second[1]) + 0.25) / h) * h
+    if shape in PAIR_SECOND:
         # the pair's gap centred at PAIR_MID; the first body above it, moving down
-        half = math.ceil((gap / 2 + 2 * A + 0.25) / h) * h
+        half = math.ceil((gap / 2 + 2 * max(semi[2], second[2]) + 0.25) / h) * h
         fine_z = (PAIR_MID - half, PAIR_MID + half)
-        bodies = (body_entry("upper", semi, (0, 0, PAIR_MID + gap / 2 + A), (0, 0, -U))
-                  + body_entry("lower", semi, (0, 0, PAIR_MID - gap / 2 - A), (0, 0, U)))
+        bodies = (body_entry("upper", semi, (0, 0, PAIR_MID + gap / 2 + semi[2]), (0, 0, -U))
+                  + body_entry("lower", second, (0, 0, PAIR_MID - gap / 2 - second[2]),
+                               (0, 0, U)))
     else:
         fine_z = (0.0, math.ceil((gap + 2 * semi[2] + 0.25) / h) * h)
         bodies = body_entry("sphere", semi, (0, 0, semi[2] + gap), MOTIONS[motion][0])
@@ -378,8 +391,10 @@ def run_one(cpd, gap, force, quick, rescore_only=False, motion="approach", box_h
 
 
 def paraboloid_force(shape, gap):
-    """The squeeze film's leading term 6 pi mu U R*^2/h over 6 pi mu a U (a = d/2)."""
-    return SHAPES[shape][1] ** 2 / (A * gap)
+    """The squeeze film's leading term 6 pi mu V R*^2/h over 6 pi mu a U (a = d/2), V the
+    closing speed: U against the wall, 2 U for a pair."""
+    closing = 2.0 if shape in PAIR_SECOND else 1.0
+    return closing * SHAPES[shape][1] ** 2 / (A * gap)
 
 
 def reynolds_exact_gap_ratio(shape, gap):
@@ -714,7 +729,9 @@ def spheroid_table_and_figure(rows, sphere_rows):
     paraboloid's leading term and the excess over it, against the sphere's exact values."""
     shapes = sorted({r["shape"] for r in rows})
     cpds = sorted({int(r["cpd"]) for r in rows})
-    lines = ["Prolate spheroid AR 2 (minor diameter d) approaching the wall: the force, resolved + "
+    lines = ["Prolate spheroid AR 2 (minor diameter d) approaching the wall, and two crossed "
+             "ones approaching each other side by side (prolatePairCrossed, each at U: F_par at "
+             "the closing speed 2U, the force on one body): the force, resolved + "
              "correction, over the paraboloid's leading term F_par = 6 pi mu U R*^2/h (resolved "
              "alone in brackets); the Reynolds equation on the exact gap over F_par "
              "(validation/squeezeFilm); the change of the total from the coarsest to the finest "
@@ -781,7 +798,8 @@ def spheroid_table_and_figure(rows, sphere_rows):
         ax.set_xlabel("gap h / d")
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=6)
-    fig.suptitle("Prolate spheroid AR 2 approaching a wall (Stokes): resolved force plus correction")
+    fig.suptitle("Prolate spheroids AR 2 approaching a wall or each other (Stokes): "
+                 "resolved force plus correction")
     fig.tight_layout()
     fig.savefig(os.path.join(RESULTS, "spheroid.png"), dpi=120)
     plt.close(fig)
@@ -841,7 +859,8 @@ def main():
                    help="approach: towards the wall (Brenner); sliding: parallel to it")
     r.add_argument("--shape", choices=sorted(SHAPES), default="sphere",
                    help="a prolate spheroid AR 2 (minor diameter d) approaching the wall "
-                        "broadside or tip-on (default gaps: SPHEROID_GAPS)")
+                        "broadside or tip-on, or two crossed ones approaching each other "
+                        "(default gaps: SPHEROID_GAPS); two spheres (spherePair, PAIR_GAPS)")
     fp = sp.add_parser("fit")
     fp.add_argument("--cpd", type=int, default=8, choices=[4, 8, 12, 16])
     sp.add_parser("plot")

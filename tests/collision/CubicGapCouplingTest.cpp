@@ -21,6 +21,7 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 using namespace collision;
@@ -67,6 +68,11 @@ TEST(CubicGapCoupling, VanishesWhereTheClosestPointsAreVertices) {
       EXPECT_LT(c.approachMoment().norm(), 1e-18) << "no twist: the axes of S1 are K's";
     }
   }
+  // bad input: a viscosity that is not positive, two planes (no film)
+  EXPECT_THROW(CubicGapCoupling(sphere.curvature, Mat3::Zero(), sphere.third, kFlat, z, 0),
+               std::invalid_argument);
+  EXPECT_THROW(CubicGapCoupling(Mat3::Zero(), Mat3::Zero(), kFlat, kFlat, z, mu),
+               std::invalid_argument);
 }
 
 TEST(CubicGapCoupling, ATiltedProlateOnAPlaneGivesTheReynoldsCoefficients) {

@@ -937,7 +937,8 @@ void CollisionModel::addTangentialLubrication(const std::vector<CollisionBody>& 
   Scalar rate = law.rate(logFactor, side1.arm, s1.inverseMass, s1.inverseInertia, side2.arm,
                          s2.inverseMass, s2.inverseInertia);
   // the coupling of normal and tangential motion from the gap's cubic terms:
-  // zero where both closest points are vertices, always on spheres and walls
+  // zero wherever both closest points are vertices, so two spheres and a
+  // sphere and a wall skip it
   const bool sphere1 = b1.shape.elongation() == 1;
   const bool sphere2 = wall || bodies[j].shape.elongation() == 1;
   if (!(sphere1 && sphere2)) {

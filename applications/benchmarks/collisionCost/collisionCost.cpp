@@ -37,13 +37,20 @@
  *               prefilter and no forces (only the distances); its two phases timed apart;
  *   paper       CollisionModel::forces with distanceMethod paper (the founding paper's
  *               choice: Moving Balls for 1/3 < Ar < 3, GJK otherwise, certified stop;
- *               overlaps from the dual), warm and cold as above, on its own two models.
+ *               overlaps from the dual), warm and cold as above, on its own two models;
+ *   film A/B    two more warm models called back to back, in alternating order from round
+ *               to round (the first call of a pair pays for the caches the other left): one
+ *               as `warm`, one whose lubrication has its tangential terms off (the film's
+ *               tangential law and, for pairs that are not two spheres, the coupling of
+ *               normal and tangential motion from the gap's cubic terms). Their ratio is what
+ *               the tangential terms cost (lubricationContact; 1 up to noise in contact mode).
  * The replicas are checked against the model's own statistics (same candidate pairs, same
  * prefilter rejections, same distance queries) on every round: a mismatch stops the run with
  * a message.
  *
  * Google Benchmark mode: cold/, warm/, naive/ and pairSearch/ (bounding spheres + PairSearch)
- * per mode and Ar, on the same scenes (seed 1, 32 states), each call on the next state.
+ * per mode and Ar, and warmNormalFilm/ (lubricationContact without the film's tangential
+ * terms), on the same scenes (seed 1, 32 states), each call on the next state.
  */
 #include "collision/CollisionModel.hpp"
 #include "collision/PairSearch.hpp"
@@ -501,6 +508,8 @@ struct Timings {
   std::vector<double> spheres, naiveDistances, perQueryCold, perQueryWarm, perQueryNaive;
   std::vector<double> damping;  ///< dampingForces after the warm call (lubricationContact)
   std::vector<double> paperWarm, paperCold;  ///< forces() with distanceMethod paper
+  std::vector<double> fullFilmWarm;    ///< warm forces(), the A/B pair's model as `warm`
+  std::vector<double> normalFilmWarm;  ///< warm forces() without the film's tangential terms
 };
 
 /// Sums over the timed rounds.
@@ -526,7 +535,7 @@ const char* kColumns =
     "naivePairsTested,naiveSphereOverlaps,naiveQueries,naiveMeanIterations,naiveNotConverged,"
     "paperColdUs,paperColdQ1Us,paperColdQ3Us,paperWarmUs,paperWarmQ1Us,paperWarmQ3Us,"
     "paperOverDualCold,paperOverDualWarm,paperQueries,paperColdMeanIterations,paperWarmMeanIterations,"
-    "paperNotConverged\n";
+    "paperNotConverged,fullFilmWarmUs,normalFilmWarmUs,fullFilmOverNormalFilm\n";
 
 /// One (Ar, mode): warm-up rounds, then the timed rounds, interleaved.
 void measure(Scene& scene, CollisionMode mode, int warmupRounds, int rounds, Timings& tm, Counts& n) {
@@ -536,6 +545,9 @@ void measure(Scene& scene, CollisionMode mode, int warmupRounds, int rounds, Tim
   Settings paperSettings = settings;
   paperSettings.distanceMethod = "paper";
   CollisionModel paperWarmModel = modelFor(paperSettings), paperColdModel = modelFor(paperSettings);
+  Settings normalFilmSettings = settings;
+  normalFilmSettings.laws.lubrication.tangential = false;
+  CollisionModel fullFilmModel = modelFor(settings), normalFilmModel = modelFor(normalFilmSettings);
   StagedReplica replica;
   const ellipsoids::DualNewton dual;
   Spheres sp;
@@ -605,12 +617,32 @@ void measure(Scene& scene, CollisionMode mode, int warmupRounds, int rounds, Tim
     const collision::CollisionStatistics pws = paperWarmModel.statistics();
     const collision::CollisionStatistics pcs = paperColdModel.statistics();
 
+    // the warm call with and without the film's tangential terms (the same
+    // pairs), back to back, the order alternating from round to round
+    normalFilmModel.resetStatistics();
+    fullFilmModel.resetStatistics();
+    const auto timedWarmCall = [&](CollisionModel& model) {
+      const double t0 = cpuNow();
+      model.forces(bodies, kContactTime, kSubDt, force, torque);
+      return cpuNow() - t0;
+    };
+    double fullFilmSeconds = 0, normalFilmSeconds = 0;
+    if (r % 2 == 0) {
+      fullFilmSeconds = timedWarmCall(fullFilmModel);
+      normalFilmSeconds = timedWarmCall(normalFilmModel);
+    } else {
+      normalFilmSeconds = timedWarmCall(normalFilmModel);
+      fullFilmSeconds = timedWarmCall(fullFilmModel);
+    }
+    const collision::CollisionStatistics nfs = normalFilmModel.statistics();
+
     // the replicas must do what the model does
     if (st.candidates != cs.candidatePairs || st.rejected != cs.prefilterRejected ||
         st.queries != cs.distanceQueries || overlaps != cs.candidatePairs ||
         ps.sphereOverlaps != cs.candidatePairs || ws.candidatePairs != cs.candidatePairs ||
         ws.distanceQueries != cs.distanceQueries || pcs.contacts != cs.contacts ||
-        pcs.prefilterRejected != cs.prefilterRejected) {
+        pcs.prefilterRejected != cs.prefilterRejected || nfs.lubricated != ws.lubricated ||
+        nfs.distanceQueries != ws.distanceQueries) {
       throw std::logic_error(
           "the benchmark's replica of the model's steps disagrees with CollisionModel "
           "(candidate pairs: model " + std::to_string(cs.candidatePairs) + ", replica " +
@@ -618,7 +650,8 @@ void measure(Scene& scene, CollisionMode mode, int warmupRounds, int rounds, Tim
           "; rejected: model " + std::to_string(cs.prefilterRejected) + ", replica " +
           std::to_string(st.rejected) + "; queries: model " + std::to_string(cs.distanceQueries) +
           ", replica " + std::to_string(st.queries) + "; contacts: dual " + std::to_string(cs.contacts) +
-          ", paper " + std::to_string(pcs.contacts) +
+          ", paper " + std::to_string(pcs.contacts) + "; lubricated: with the tangential terms " +
+          std::to_string(ws.lubricated) + ", without " + std::to_string(nfs.lubricated) +
           "): update Spheres/StagedReplica in collisionCost.cpp to follow CollisionModel.cpp");
     }
     if (r < warmupRounds) continue;
@@ -630,6 +663,8 @@ void measure(Scene& scene, CollisionMode mode, int warmupRounds, int rounds, Tim
     tm.naive.push_back(nc1 - nc0);
     tm.paperWarm.push_back(pw1 - pw0);
     tm.paperCold.push_back(pc1 - pc0);
+    tm.fullFilmWarm.push_back(fullFilmSeconds);
+    tm.normalFilmWarm.push_back(normalFilmSeconds);
     n.paperQueries += pcs.distanceQueries;
     n.paperColdIterations += pcs.distanceIterations;
     n.paperWarmIterations += pws.distanceIterations;
@@ -734,7 +769,8 @@ void runTable(const TableOptions& t) {
         << med(tm.paperWarm) << ',' << q1(tm.paperWarm) << ',' << q3(tm.paperWarm) << ','
         << med(tm.paperCold) / cold << ',' << med(tm.paperWarm) / warm << ',' << n.paperQueries / R << ','
         << ratio(n.paperColdIterations, n.paperQueries) << ',' << ratio(n.paperWarmIterations, n.paperQueries)
-        << ',' << n.paperNotConverged << '\n';
+        << ',' << n.paperNotConverged << ',' << med(tm.fullFilmWarm) << ','
+        << med(tm.normalFilmWarm) << ',' << med(tm.fullFilmWarm) / med(tm.normalFilmWarm) << '\n';
       f.flush();
       if (!f) throw std::runtime_error("writing '" + t.out + "' failed");
       std::cerr << "collisionCost: Ar " << c.name << ' ' << toString(mode) << ": cold "
@@ -768,9 +804,12 @@ void setQueryCounters(benchmark::State& state, const collision::CollisionStatist
   state.counters["notConverged"] = double(s.distanceNotConverged);
 }
 
-void forcesBenchmark(benchmark::State& state, Case c, CollisionMode mode, bool warm) {
+void forcesBenchmark(benchmark::State& state, Case c, CollisionMode mode, bool warm,
+                     bool tangentialFilm) {
   Scene& scene = cachedScene(c);
-  CollisionModel model = modelFor(settingsFor(mode));
+  Settings settings = settingsFor(mode);
+  settings.laws.lubrication.tangential = tangentialFilm;
+  CollisionModel model = modelFor(settings);
   std::vector<Vec3> force, torque;
   scene.next = 0;
   model.forces(scene.advance(), kContactTime, kSubDt, force, torque);  // history of a first call
@@ -814,10 +853,15 @@ void registerBenchmarks() {
   for (const Case& c : kCases) {
     for (CollisionMode mode : kModes) {
       const std::string suffix = std::string("/") + toString(mode) + "/Ar:" + c.name;
-      benchmark::RegisterBenchmark(("cold" + suffix).c_str(), forcesBenchmark, c, mode, false)
+      benchmark::RegisterBenchmark(("cold" + suffix).c_str(), forcesBenchmark, c, mode, false, true)
           ->Unit(benchmark::kMillisecond);
-      benchmark::RegisterBenchmark(("warm" + suffix).c_str(), forcesBenchmark, c, mode, true)
+      benchmark::RegisterBenchmark(("warm" + suffix).c_str(), forcesBenchmark, c, mode, true, true)
           ->Unit(benchmark::kMillisecond);
+      if (mode == CollisionMode::lubricationContact) {
+        benchmark::RegisterBenchmark(("warmNormalFilm" + suffix).c_str(), forcesBenchmark, c, mode,
+                                     true, false)
+            ->Unit(benchmark::kMillisecond);
+      }
       benchmark::RegisterBenchmark(("naive" + suffix).c_str(), naiveBenchmark, c, mode)
           ->Unit(benchmark::kMillisecond);
       benchmark::RegisterBenchmark(("pairSearch" + suffix).c_str(), searchBenchmark, c, mode)

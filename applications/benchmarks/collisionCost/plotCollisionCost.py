@@ -128,6 +128,19 @@ def tables(rows):
                 out.append("| %s | %.1f | %.1f | %s | %.1f %% |" % (
                     r["aspectRatio"], r["dampedPairs"], r["dampingSweeps"], ms(r["dampingUs"]),
                     100 * r["dampingUs"] / r["warmUs"] if r["warmUs"] > 0 else 0))
+        if all("fullFilmWarmUs" in r for r in rs) and any(r["lubricated"] > 0 for r in rs):
+            out += ["", "The film's tangential terms (the tangential law and, for pairs that are not two "
+                    "spheres, the cubic coupling): the warm call with them and without them, back to "
+                    "back in alternating order (ms, median; per lubricated pair: the difference over "
+                    "the pairs lubricated per call):", "",
+                    "| Ar | lubricated pairs | warm, with | warm, without | with/without | us per lubricated pair |",
+                    "|---|---|---|---|---|---|"]
+            for r in rs:
+                perPair = ("%.2f" % ((r["fullFilmWarmUs"] - r["normalFilmWarmUs"]) / r["lubricated"])
+                           if r["lubricated"] > 0 else "-")
+                out.append("| %s | %.1f | %s | %s | %.3f | %s |" % (
+                    r["aspectRatio"], r["lubricated"], ms(r["fullFilmWarmUs"]),
+                    ms(r["normalFilmWarmUs"]), r["fullFilmOverNormalFilm"], perPair))
         out.append("")
     return "\n".join(out) + "\n"
 

@@ -934,8 +934,9 @@ void CollisionModel::addTangentialLubrication(const std::vector<CollisionBody>& 
     side2.angularVelocity = bodies[j].angularVelocity;
   }
   FilmLoads l = law.loads(logFactor, side1, side2);
-  Scalar rate = law.rate(logFactor, side1.arm, s1.inverseMass, s1.inverseInertia, side2.arm,
-                         s2.inverseMass, s2.inverseInertia);
+  const FilmMobility mobility(side1.arm, s1.inverseMass, s1.inverseInertia, side2.arm,
+                              s2.inverseMass, s2.inverseInertia);
+  Scalar rate = law.rate(logFactor, mobility);
   // the coupling of normal and tangential motion from the gap's cubic terms:
   // zero wherever both closest points are vertices, so two spheres and a
   // sphere and a wall skip it
@@ -954,9 +955,7 @@ void CollisionModel::addTangentialLubrication(const std::vector<CollisionBody>& 
     const FilmLaw couplingLaw = [&coupling](const FilmSide& one, const FilmSide& two) {
       return coupling.loads(1, one, two);
     };
-    rate += logFactor * filmResistanceRate(couplingLaw, side1.arm, s1.inverseMass,
-                                           s1.inverseInertia, side2.arm, s2.inverseMass,
-                                           s2.inverseInertia);
+    rate += logFactor * filmResistanceRate(couplingLaw, mobility);
   }
   // explicit in the sub-step, scaled by the backward-Euler factor of the
   // fastest rate the terms impose (the sum of the two laws' bounds): close to

@@ -10,6 +10,19 @@
  * upper bound of the largest eigenvalue of the mobility times the resistance,
  * unit-consistent whatever the bodies' sizes. Inverse masses 0: fixed bodies.
  *
+ * A film law acts through the relative motion of the two surfaces at the
+ * closest points, z = (V, W) with V = v1 + Omega1 x r1 - v2 - Omega2 x r2 and
+ * W = Omega1 - Omega2 (r1, r2 the arms from the centres), and gives body 1 a
+ * force f at its closest point and a moment m, body 2 their opposites at its
+ * own: q enters as z = B q and the loads are B^T (f, m), so R = B^T N B with
+ * N the 6 x 6 resistance of the film, (f, m) = -N z. With H = B W B^T the
+ * mobility of the relative motion (W = D^2),
+ *     |D R D|_F^2 = tr(D R^T W R D) = tr(N^T H N H),
+ * six evaluations of the law and no square roots (FilmMobility holds H, once
+ * per pair for every law of the pair). Both film laws of the module have this
+ * form (TangentialLubrication, CubicGapCoupling; tests/collision check the
+ * identity against D R D assembled column by column).
+ *
  * See also: TangentialLubrication.hpp, CubicGapCoupling.hpp.
  */
 #ifndef COLLISION_FILMRESISTANCERATE_HPP
@@ -40,7 +53,21 @@ struct FilmSide {
 /// The loads of a linear film law for the motions of its two sides.
 using FilmLaw = std::function<FilmLoads(const FilmSide&, const FilmSide&)>;
 
-/// The Frobenius norm of D R D for the law's loads at these arms and mobilities.
+/// The mobility H = B W B^T of the relative motion (V, W) of two bodies at
+/// their closest points (arms from the centres), from their inverse masses
+/// and world-frame inverse inertia tensors (0: a fixed body or a wall).
+struct FilmMobility {
+  FilmMobility(const Vec3& arm1, Scalar inverseMass1, const Mat3& inverseInertia1,
+               const Vec3& arm2, Scalar inverseMass2, const Mat3& inverseInertia2);
+  Vec3 arm1;
+  Vec3 arm2;
+  Eigen::Matrix<Scalar, 6, 6> relative;
+};
+
+/// The Frobenius norm of D R D for the law's loads (the law as above).
+Scalar filmResistanceRate(const FilmLaw& loads, const FilmMobility& mobility);
+
+/// The same, the mobility from the bodies' arms, inverse masses and inertias.
 Scalar filmResistanceRate(const FilmLaw& loads, const Vec3& arm1, Scalar inverseMass1,
                           const Mat3& inverseInertia1, const Vec3& arm2, Scalar inverseMass2,
                           const Mat3& inverseInertia2);

@@ -82,6 +82,9 @@ class TangentialLubrication {
   Scalar rate(Scalar logFactor, const Vec3& arm1, Scalar inverseMass1, const Mat3& inverseInertia1,
               const Vec3& arm2, Scalar inverseMass2, const Mat3& inverseInertia2) const;
 
+  /// The same with the pair's mobility computed once (FilmMobility).
+  Scalar rate(Scalar logFactor, const FilmMobility& mobility) const;
+
   /// R = 1/sqrt(k1 k2) [m]
   Scalar areaRadius() const { return radius_; }
 

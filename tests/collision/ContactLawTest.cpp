@@ -1,6 +1,7 @@
 #include "collision/CollisionModel.hpp"
 #include "collision/ContactLaw.hpp"
 #include "collision/PlaneWall.hpp"
+#include "collision/SpringDashpotContact.hpp"
 #include "ModelSetup.hpp"
 
 #include <gtest/gtest.h>
@@ -60,6 +61,61 @@ TEST(ContactLaw, DashpotPullsOnlyWhileTheSpringStillPushes) {
   EXPECT_NEAR(contactForce(1.0, n, separating, law, s1, wall, 0, 1e-3).z(), 1.0 - 5.0, 1e-12);
   EXPECT_EQ(contactForce(0.0, n, separating, law, s1, wall, 0, 1e-3).z(), 0.0);
   EXPECT_NEAR(contactForce(0.0, n, approaching, law, s1, wall, 0, 1e-3).z(), 5.0, 1e-12);
+}
+
+namespace {
+/// a contact of mass 1 kg at its first touch with T_c 1 ms, made 2 %
+/// into a cap of 1 mm, then evaluated approaching at u_n (m/s) with the
+/// effective mass m (a turning spheroid's contact point moves, and with it
+/// m_eff) at the overlap x cap, the sub-step resolving exactly its T_c
+struct ApproachCheck {
+  ContactState state;
+  long stiffened = 0;
+};
+ApproachCheck approachAt(Scalar overlapOverCap, Scalar un, Scalar m, Scalar shortestContactTime) {
+  const SpringDashpotContact contact(0.97);
+  const Scalar cap = 1e-3;
+  ApproachCheck r;
+  r.state = contact.firstTouch(1e-3, -0.01, cap);
+  ContactLoading l;
+  l.overlap = 0.02 * cap;
+  l.normalSpeed = -0.01;
+  l.inverseMass = 1;
+  l.cap = cap;
+  l.shortestContactTime = 1e-3;
+  contact.force(r.state, l, r.stiffened);
+  r.stiffened = 0;
+  l.overlap = overlapOverCap * cap;
+  l.normalSpeed = un;
+  l.inverseMass = 1 / m;
+  l.shortestContactTime = shortestContactTime;
+  contact.force(r.state, l, r.stiffened);
+  return r;
+}
+}  // namespace
+
+TEST(SpringDashpotContact, TheApproachCheckNeverAsksForMoreSubSteps) {
+  // a fast approach near the cap, the sub-step resolving half the contact's
+  // T_c: the spring is stiffened, but its contact time (what the island's
+  // sub-steps follow) stays at or above the shortest one the sub-step
+  // resolves, also when m_eff has grown since the first touch
+  for (const Scalar m : {0.5, 1.0, 1.6}) {
+    const ApproachCheck r = approachAt(0.9, -3.0, m, 0.5e-3);
+    EXPECT_GT(r.stiffened, 0) << m;
+    EXPECT_GE(r.state.contactTime, 0.5e-3 * (1 - 1e-12)) << m;
+  }
+  EXPECT_NEAR(approachAt(0.9, -3.0, 1.0, 0.5e-3).state.contactTime, 0.5e-3, 1e-15);
+}
+
+TEST(SpringDashpotContact, BeyondTheCapTheApproachCheckLeavesTheSpring) {
+  // no spring meets the check beyond the cap; stiffening there at every
+  // evaluation to the shortest contact time, which other contacts shorten,
+  // would shrink the sub-steps step after step
+  const ApproachCheck over = approachAt(1.005, -0.5, 1.0, 0.5e-3);
+  EXPECT_EQ(over.stiffened, 0);
+  EXPECT_NEAR(over.state.contactTime, 1e-3, 1e-15);
+  // just below the cap the same approach stiffens it
+  EXPECT_GT(approachAt(0.995, -0.5, 1.0, 0.5e-3).stiffened, 0);
 }
 
 TEST(PlaneWall, SpheroidDistanceMatchesSampling) {

@@ -53,19 +53,29 @@ Scalar SpringDashpotContact::force(ContactState& c, const ContactLoading& l,
   // a fast capped impact makes up here; a body that swings into the contact
   // does not, nor does a contact loaded by another one's impact (a body
   // stopped by a wall while the one behind it comes on): the spring is
-  // stiffened to meet it, at most as stiff as the sub-step resolves (the
-  // contact's oscillation with m_eff lasting the shortest contact time)
+  // stiffened to meet it, at most as stiff as the sub-step resolves: the
+  // contact's oscillation with the current m_eff, and the contact's own T_c
+  // (kept for the mass of its first touch; the island's sub-steps follow
+  // it), last no less than the shortest contact time. A spring stiffened to
+  // it needs no more sub-steps in the next step whatever m_eff has become
+  // since the first touch (a turning spheroid moves its contact point).
+  // Beyond the cap (D <= 0) no spring meets the check: the spring is left as
+  // it is (the load rule below still acts), since stiffening it there, at
+  // every evaluation, to a shortest contact time that other contacts shorten
+  // would shrink the island's sub-steps step after step
   if (un < 0) {
     const Scalar approachEnergy = 0.5 * un * un / l.inverseMass;
     const Scalar left = cap - overlap;
     const Scalar taken = left > 0 ? c.springForce * left + 0.5 * law.stiffness * left * left : 0;
-    if (approachEnergy + l.load * std::max(left, Scalar(0)) > taken) {
+    if (left > 0 && approachEnergy + l.load * left > taken) {
       const Scalar lnE = std::log(e);
-      const Scalar resolved = (kPi * kPi + lnE * lnE) /
-                              (l.inverseMass * l.shortestContactTime * l.shortestContactTime);
+      const Scalar shortest = l.shortestContactTime;
+      const Scalar timeRatio = c.contactTime / shortest;
+      const Scalar resolved =
+          std::min((kPi * kPi + lnE * lnE) / (l.inverseMass * shortest * shortest),
+                   law.stiffness * timeRatio * timeRatio);
       const Scalar needed =
-          left > 0 ? 2 * (approachEnergy + (l.load - c.springForce) * left) / (left * left)
-                   : resolved;
+          2 * (approachEnergy + (l.load - c.springForce) * left) / (left * left);
       stiffenTo(std::min(needed, resolved));
     }
   }

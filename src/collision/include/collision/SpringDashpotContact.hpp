@@ -12,7 +12,9 @@
  * F D + k_n D^2/2 >= m_eff u_n^2/2 + W D (F the spring force); where it
  * cannot (a body swinging into the contact, the trailing body of a stacked
  * pair whose leading one a wall stops) it is stiffened to meet it, at most
- * to the contact time ContactLoading::shortestContactTime. A
+ * to the contact time ContactLoading::shortestContactTime (for the current
+ * m_eff and for the contact's own T_c, which the sub-steps follow), and only
+ * below the cap (D > 0: beyond it no spring meets the check). A
  * sustained load W pressing the pair together stiffens the spring to
  * k_n >= W/(f cap) (the static overlap at most the fraction f of the cap,
  * ContactParameters::sustainedLoadOverlap, default 1/2).

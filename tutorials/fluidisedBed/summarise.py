@@ -130,6 +130,25 @@ def contacts_per_stage(case, stages, T):
     return [sums[i] / counts[i] if counts[i] else None for i in range(len(stages))]
 
 
+def collision_work(case):
+    """From the log's 'collisions:' lines over the whole run: the mean and the largest number
+    of collision sub-steps per fluid step, and the largest 'max overlap' (of the smallest
+    semi-axis); None without the solver log."""
+    log = os.path.join(case, "log.immersedSpheroidFoam")
+    if not os.path.exists(log):
+        return None
+    steps, overlap = [], 0.0
+    with open(log) as f:
+        for line in f:
+            if not line.startswith("collisions: "):
+                continue
+            steps.append(int(line.split()[1]))
+            m = re.search(r"max overlap (" + NUMBER[1:-1] + r") a_min", line)
+            if m:
+                overlap = max(overlap, float(m.group(1)))
+    return (sum(steps) / len(steps), max(steps), overlap) if steps else None
+
+
 def rowe(re_t):
     return (4.7 + 0.41 * re_t ** 0.75) / (1 + 0.175 * re_t ** 0.75)
 
@@ -195,6 +214,10 @@ def bed(case):
         if contacts and contacts[i] is not None:
             rows.append((f"stage U/u_t = {s:g}: contacts (pairs and walls, mean)",
                          f"{contacts[i]:.1f}"))
+    work = collision_work(case)
+    if work:
+        rows.append(("collision sub-steps per fluid step (mean, largest); largest overlap / a_min",
+                     f"{work[0]:.2f}, {work[1]}; {work[2]:.4f}"))
     rows_all, fast, top = fast_rows(t, v)
     rows.append(("rows with a body faster than 0.15 m/s (about 2 u_t); largest body speed",
                  f"{fast} of {rows_all}; {top * 1e3:.0f} mm/s"))

@@ -11,13 +11,13 @@
  * unit-consistent whatever the bodies' sizes. Inverse masses 0: fixed bodies.
  *
  * A film law acts through the relative motion of the two surfaces at the
- * closest points, z = (V, W) with V = v1 + Omega1 x r1 - v2 - Omega2 x r2 and
- * W = Omega1 - Omega2 (r1, r2 the arms from the centres), and gives body 1 a
+ * closest points, z = (V, w) with V = v1 + Omega1 x r1 - v2 - Omega2 x r2 and
+ * w = Omega1 - Omega2 (r1, r2 the arms from the centres), and gives body 1 a
  * force f at its closest point and a moment m, body 2 their opposites at its
  * own: q enters as z = B q and the loads are B^T (f, m), so R = B^T N B with
- * N the 6 x 6 resistance of the film, (f, m) = -N z. With H = B W B^T the
- * mobility of the relative motion (W = D^2),
- *     |D R D|_F^2 = tr(D R^T W R D) = tr(N^T H N H),
+ * N the 6 x 6 resistance of the film, (f, m) = -N z. With M = D^2 the bodies'
+ * mobility and H = B M B^T that of the relative motion,
+ *     |D R D|_F^2 = tr(D R^T M R D) = tr(N^T H N H),
  * six evaluations of the law and no square roots (FilmMobility holds H, once
  * per pair for every law of the pair). Both film laws of the module have this
  * form (TangentialLubrication, CubicGapCoupling; tests/collision check the
@@ -53,7 +53,7 @@ struct FilmSide {
 /// The loads of a linear film law for the motions of its two sides.
 using FilmLaw = std::function<FilmLoads(const FilmSide&, const FilmSide&)>;
 
-/// The mobility H = B W B^T of the relative motion (V, W) of two bodies at
+/// The mobility H = B M B^T of the relative motion (V, w) of two bodies at
 /// their closest points (arms from the centres), from their inverse masses
 /// and world-frame inverse inertia tensors (0: a fixed body or a wall).
 struct FilmMobility {

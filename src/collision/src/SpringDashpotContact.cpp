@@ -66,7 +66,7 @@ Scalar SpringDashpotContact::force(ContactState& c, const ContactLoading& l,
   if (un < 0) {
     const Scalar approachEnergy = 0.5 * un * un / l.inverseMass;
     const Scalar left = cap - overlap;
-    const Scalar taken = left > 0 ? c.springForce * left + 0.5 * law.stiffness * left * left : 0;
+    const Scalar taken = c.springForce * left + 0.5 * law.stiffness * left * left;
     if (left > 0 && approachEnergy + l.load * left > taken) {
       const Scalar lnE = std::log(e);
       const Scalar shortest = l.shortestContactTime;

@@ -226,10 +226,10 @@ TEST(TangentialLubrication, RateAndBadArguments) {
   const Vec3 d(0, 0, -1), arm = 1e-3 * d;
   const TangentialLubrication law = TangentialLubrication::spheres(1e-3, kInf, d, mu);
   const Mat3 I = Mat3::Identity() * 1e6;
-  EXPECT_EQ(law.rate(0, arm, 1, I, Vec3::Zero(), 0, Mat3::Zero()), 0);
-  EXPECT_NEAR(law.rate(L, arm, 1, Mat3::Zero(), Vec3::Zero(), 0, Mat3::Zero()),
+  EXPECT_EQ(law.rate(0, FilmMobility(arm, 1, I, Vec3::Zero(), 0, Mat3::Zero())), 0);
+  EXPECT_NEAR(law.rate(L, FilmMobility(arm, 1, Mat3::Zero(), Vec3::Zero(), 0, Mat3::Zero())),
               std::sqrt(2.0) * 6 * kPi * mu * 1e-3 * L * 8 / 15, 1e-15);
-  EXPECT_NEAR(law.rate(L, arm, 0, I, Vec3::Zero(), 0, Mat3::Zero()),
+  EXPECT_NEAR(law.rate(L, FilmMobility(arm, 0, I, Vec3::Zero(), 0, Mat3::Zero())),
               std::sqrt(2.0) * 8 * kPi * mu * 1e-9 * L * 2 / 5 * 1e6, 1e-12);
   EXPECT_THROW(TangentialLubrication::spheres(0, 1, d, mu), std::invalid_argument);
   EXPECT_THROW(TangentialLubrication::spheres(1, -1, d, mu), std::invalid_argument);
@@ -275,8 +275,9 @@ TEST(TangentialLubrication, ASphereSlidingOverAWallIsHeldBackAndSpunUp) {
     const TangentialLubrication law = TangentialLubrication::spheres(a, kInf, -Vec3::UnitZ(), mu);
     const Scalar Lw = std::log(7.5);
     const CollisionBody cb = b.collisionBody();
-    const Scalar relax = 1 / (1 + dt * law.rate(Lw, -a * Vec3::UnitZ(), 1 / cb.mass, cb.inverseInertia,
-                                                Vec3::Zero(), 0, Mat3::Zero()));
+    const Scalar relax = 1 / (1 + dt * law.rate(Lw, FilmMobility(-a * Vec3::UnitZ(), 1 / cb.mass,
+                                                             cb.inverseInertia, Vec3::Zero(), 0,
+                                                             Mat3::Zero())));
     EXPECT_GT(relax, 0.5) << "a case where the terms are resolved by the sub-step";
     EXPECT_LT(relax, 1);
     EXPECT_NEAR(F[0].x(), -relax * 6 * kPi * mu * a * Lw * 8 / 15 * 0.05, 1e-12 * std::abs(F[0].x()));

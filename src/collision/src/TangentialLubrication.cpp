@@ -65,14 +65,6 @@ FilmLoads TangentialLubrication::loads(Scalar logFactor, const FilmSide& body1,
   return out;
 }
 
-Scalar TangentialLubrication::rate(Scalar logFactor, const Vec3& arm1, Scalar inverseMass1,
-                                   const Mat3& inverseInertia1, const Vec3& arm2,
-                                   Scalar inverseMass2, const Mat3& inverseInertia2) const {
-  if (!(logFactor > 0)) return 0;
-  return rate(logFactor, FilmMobility(arm1, inverseMass1, inverseInertia1, arm2, inverseMass2,
-                                      inverseInertia2));
-}
-
 Scalar TangentialLubrication::rate(Scalar logFactor, const FilmMobility& mobility) const {
   if (!(logFactor > 0)) return 0;
   const FilmLaw law = [this](const FilmSide& one, const FilmSide& two) { return loads(1, one, two); };

@@ -78,11 +78,8 @@ class TangentialLubrication {
                                    const FilmSide& body2) const;
 
   /// The largest rate at which the terms alone change the bodies' motion, for
-  /// the log factor L: filmResistanceRate of loads() (FilmResistanceRate.hpp).
-  Scalar rate(Scalar logFactor, const Vec3& arm1, Scalar inverseMass1, const Mat3& inverseInertia1,
-              const Vec3& arm2, Scalar inverseMass2, const Mat3& inverseInertia2) const;
-
-  /// The same with the pair's mobility computed once (FilmMobility).
+  /// the log factor L: filmResistanceRate of loads() (FilmResistanceRate.hpp),
+  /// with the pair's mobility computed once (FilmMobility).
   Scalar rate(Scalar logFactor, const FilmMobility& mobility) const;
 
   /// R = 1/sqrt(k1 k2) [m]

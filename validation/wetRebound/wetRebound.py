@@ -58,6 +58,9 @@ E_DRY = 0.97
 # (LubricationParameters::kWallResolvedGapCells) and the activation gap in resolved gaps
 # (kActivationOverResolvedGap)
 RESOLVED_GAP_CELLS = 0.62
+# the release gap and the box width, in d, of the validation's runs
+DEFAULT_RELEASE_GAP = 2.0
+DEFAULT_BOX_WIDTH = 4.0
 ACTIVATION_OVER_DELTA = 4.0
 
 # name: (St, Re, rho_f, mu, d) of Gondret et al. 2002 (physics-references.md 2)
@@ -69,32 +72,39 @@ CASES = {
     "St742": (742, 788, 920.0, 0.005, 5e-3),
 }
 
-FIELDS = ["name", "St_case", "cpd", "maxOverlap", "saturation", "virtualMass", "startShift", "cells", "dt", "steps", "U_release", "U_in", "U_out", "e",
+FIELDS = ["name", "St_case", "cpd", "maxOverlap", "saturation", "virtualMass", "startShift", "releaseGap", "boxWidth", "cells", "dt", "steps", "U_release", "U_in", "U_out", "e",
           "e_spring", "e_after_film", "top_gap_a",
           "St", "e_over_edry", "master", "max_overlap_a", "J_coll", "J_hydro", "J_gravity", "J_hydro_out", "suction", "wall_s", "cpu_s", "host", "date",
           "commit"]
 
 
 def write_case(case, name, cpd, end_factor=1.0, max_overlap=None, saturation=None,
-               virtual_mass=None, start_shift=None):
+               virtual_mass=None, start_shift=None, release_gap=None, box_width=None):
     """The case of run `name`; start_shift: the release gap raised by that many cells (the
-    sphere's position against the cells when it reaches the wall)."""
+    sphere's position against the cells when it reaches the wall); release_gap: the gap at
+    the release in d (default 2; the box is 3 d higher than it); box_width: the box's width
+    in d (default 4)."""
     st, re_, rho_f, mu, d = CASES[name]
     a = d / 2
     u = 9 * st * mu / (RHO_P * d)
     h = d / cpd
     dt = 0.4 * h / u
-    lx, lz = 4 * d, 5 * d
-    nx, nz = round(4 * cpd), round(5 * cpd)
-    # approach 2d, contact, and the rebound to its largest speed (the viscous
-    # cases decelerate within a fraction of d; 1.2 d at St 742)
+    gap0 = DEFAULT_RELEASE_GAP if release_gap is None else release_gap
+    width = DEFAULT_BOX_WIDTH if box_width is None else box_width
+    lx, lz = width * d, (gap0 + 3) * d
+    nx, nz = round(width * cpd), round((gap0 + 3) * cpd)
+    # approach, contact, and the rebound to its largest speed (the viscous
+    # cases decelerate within a fraction of d; 1.2 d at St 742); a longer fall
+    # is timed for the sphere slowed by up to 15 % while its wake forms
     shift = (start_shift or 0.0) * h
-    end = end_factor * ((2.0 * d + shift) / u + 40 * dt + (0.6 + 0.6 * (st > 500)) * d / u)
+    approach = (2.0 * d + shift) / u if release_gap is None else (gap0 * d + shift) / (0.85 * u)
+    end = end_factor * (approach + 40 * dt + (0.6 + 0.6 * (st > 500)) * d / u)
     shutil.rmtree(case, ignore_errors=True)
     shutil.copytree(os.path.join(HERE, "caseTemplate"), case)
     mm = 1e3
     bm = f"{case}/system/blockMeshDict"
-    substitute_re(bm, r"^// .*cells.*$", f"// 4d x 4d x 5d, d = {d * mm:g} mm, {cpd} cells per d")
+    substitute_re(bm, r"^// .*cells.*$",
+                  f"// {width:g}d x {width:g}d x {gap0 + 3:g}d, d = {d * mm:g} mm, {cpd} cells per d")
     substitute_re(bm, r"\(9 0 0\) \(9 9 0\) \(0 9 0\)",
                   f"({lx * mm:g} 0 0) ({lx * mm:g} {lx * mm:g} 0) (0 {lx * mm:g} 0)")
     substitute_re(bm, r"\(0 0 12\) \(9 0 12\) \(9 9 12\) \(0 9 12\)",
@@ -111,7 +121,8 @@ def write_case(case, name, cpd, end_factor=1.0, max_overlap=None, saturation=Non
     p = f"{case}/constant/immersedBodiesProperties"
     substitute_re(p, r"^fluidDensity .*$", f"fluidDensity    {rho_f:g};")
     substitute_re(p, r"semiAxes .*$", f"semiAxes        ({a:g} {a:g} {a:g});")
-    substitute_re(p, r"centre .*$", f"centre          ({lx / 2:g} {lx / 2:g} {a + 2 * d + shift:.9g});")
+    substitute_re(p, r"centre .*$",
+                  f"centre          ({lx / 2:g} {lx / 2:g} {a + gap0 * d + shift:.9g});")
     substitute_re(p, r"velocity .*$", f"velocity        (0 0 {-u:.6g});")
     if max_overlap is not None:
         substitute_re(p, r"^    restitution     0.97;$",
@@ -145,6 +156,14 @@ def analyse(h5, name):
         raise RuntimeError(f"{name}: a collision force in the first row, no approach to measure")
     u_in = -w[i0 - 1]
     gap = z - a
+    # the first bounce only: the series ends before a second touch of the wall
+    below = np.flatnonzero(gap < 0)
+    if len(below):
+        out = below[0] + np.flatnonzero(gap[below[0]:] >= 0)
+        again = out[0] + np.flatnonzero(gap[out[0]:] < 0) if len(out) else []
+        if len(again):
+            t, z, w, fc, fh, gap = (x[:again[0]] for x in (t, z, w, fc, fh, gap))
+            touched = touched[touched < again[0]]
     # the largest rebound speed once the sphere has left the wall (gap >= 0
     # again after the contact: the film's resistance to the separation
     # included); the largest speed at any time after the touch, reached at
@@ -220,12 +239,23 @@ def same_gap_restitution(h5, name, gaps=SAME_GAPS):
     return values
 
 
+def default_geometry(r):
+    """True for a run in the validation's box, released from the default gap."""
+    return ((r.get("releaseGap") or f"{DEFAULT_RELEASE_GAP:g}") == f"{DEFAULT_RELEASE_GAP:g}"
+            and (r.get("boxWidth") or f"{DEFAULT_BOX_WIDTH:g}") == f"{DEFAULT_BOX_WIDTH:g}")
+
+
+def default_position(r):
+    """True for a run released from the default position in the validation's box."""
+    return r["startShift"] == "0" and default_geometry(r)
+
+
 def same_gap_rows(rows, variants=False):
     """{cpd: [(row, [e(h)/e_dry for SAME_GAPS])]} for the default-setting runs, or with
     variants, for every run released from the default position (each setting its rows)."""
     out = {}
     for r in rows:
-        if r["startShift"] != "0" or (not variants and (r["maxOverlap"], r["saturation"],
+        if not default_position(r) or (not variants and (r["maxOverlap"], r["saturation"],
                                                          r["virtualMass"]) != ("0.1", "0.001", "0.5")):
             continue
         name = r["name"].split("-c")[0]
@@ -263,19 +293,22 @@ def measured(r):
 
 
 def run_one(name, cpd, force, quick, max_overlap=None, saturation=None, virtual_mass=None,
-            start_shift=None):
+            start_shift=None, release_gap=None, box_width=None):
     out_csv = os.path.join(RESULTS, "quick.csv") if quick else RUNS_CSV
     tag = (f"{name}-c{cpd}" + (f"-ov{max_overlap:g}" if max_overlap is not None else "")
            + (f"-sat{saturation:g}" if saturation is not None else "")
            + (f"-cv{virtual_mass:g}" if virtual_mass is not None else "")
-           + (f"-sh{start_shift:g}" if start_shift is not None else ""))
+           + (f"-sh{start_shift:g}" if start_shift is not None else "")
+           + (f"-rg{release_gap:g}" if release_gap is not None else "")
+           + (f"-w{box_width:g}" if box_width is not None else ""))
     rows = read_csv(out_csv)
     if not force and not quick and any(r["name"] == tag for r in rows):
         print(f"{tag}: in {os.path.relpath(out_csv, HERE)}, skipped")
         return
     case = os.path.join(HERE, "run", tag)
     info = write_case(case, name, cpd, max_overlap=max_overlap, saturation=saturation,
-                      virtual_mass=virtual_mass, start_shift=start_shift)
+                      virtual_mass=virtual_mass, start_shift=start_shift,
+                      release_gap=release_gap, box_width=box_width)
     print(f"{tag}: {info['cells']} cells, dt {info['dt']:.3g} s, end {info['end']:.3g} s", flush=True)
     start = time.time()
     rc = run_logged(["nice", "-n", "5", "./Allrun"], case, "log.Allrun")
@@ -291,7 +324,10 @@ def run_one(name, cpd, force, quick, max_overlap=None, saturation=None, virtual_
                maxOverlap=f"{max_overlap if max_overlap is not None else 0.1:g}",
                saturation=f"{saturation if saturation is not None else 1e-3:g}",
                virtualMass=f"{virtual_mass if virtual_mass is not None else 0.5:g}",
-               startShift=f"{start_shift or 0:g}", cells=info["cells"],
+               startShift=f"{start_shift or 0:g}",
+               releaseGap=f"{release_gap if release_gap is not None else DEFAULT_RELEASE_GAP:g}",
+               boxWidth=f"{box_width if box_width is not None else DEFAULT_BOX_WIDTH:g}",
+               cells=info["cells"],
                dt=f"{info['dt']:.6g}", steps=len(r["t"]) - 1, U_release=f"{info['U_release']:.5g}",
                wall_s=round(wall), cpu_s=round(cpu) if math.isfinite(cpu) else "",
                **provenance(), **measured(r))
@@ -321,10 +357,12 @@ def write_metrics(rows):
     of e/e_dry over the cases run with another virtualMass against the default 0.5;
     start_shift_spread_<cpd> and start_shift_spread_after_film_<cpd>, the largest range of
     e/e_dry (and of the same after the film) over the release positions a case was run
-    from (start_table). Rows with a start shift count only there."""
+    from (start_table); release_gap_<G>_box_<W>_St<N>_<cpd>_shift (and _after_film), the
+    change of e/e_dry of a run released from G d in a box W d wide against the same case in the
+    validation's set-up. Rows with a start shift or another set-up count only there."""
     metrics = {}
     default = [r for r in rows if r["maxOverlap"] == "0.1" and r["saturation"] == "0.001"
-               and r["virtualMass"] == "0.5" and r["startShift"] == "0"]
+               and r["virtualMass"] == "0.5" and default_position(r)]
     for cpd in sorted({int(r["cpd"]) for r in default}):
         sel = [r for r in default if int(r["cpd"]) == cpd]
         metrics[f"max_abs_deviation_{cpd}"] = round(
@@ -338,11 +376,22 @@ def write_metrics(rows):
     base = {(r["St_case"], int(r["cpd"])): float(r["e_over_edry"]) for r in default}
     for cv in sorted({r["virtualMass"] for r in rows} - {"0.5"}, key=float):
         shifts = [float(r["e_over_edry"]) - base[(r["St_case"], int(r["cpd"]))] for r in rows
-                  if r["virtualMass"] == cv and r["maxOverlap"] == "0.1" and r["startShift"] == "0"
+                  if r["virtualMass"] == cv and r["maxOverlap"] == "0.1" and default_position(r)
                   and r["saturation"] == "0.001" and (r["St_case"], int(r["cpd"])) in base]
         if shifts:
             metrics[f"virtual_mass_{cv}_shift_min"] = round(min(shifts), 4)
             metrics[f"virtual_mass_{cv}_shift_max"] = round(max(shifts), 4)
+    # the release gap and the box width: the change of e/e_dry (at separation, after the film)
+    # against the same case in the validation's set-up
+    for r in rows:
+        b = [x for x in default if x["St_case"] == r["St_case"] and x["cpd"] == r["cpd"]]
+        if default_geometry(r) or not b or (r["maxOverlap"], r["saturation"], r["virtualMass"],
+                                            r["startShift"]) != ("0.1", "0.001", "0.5", "0"):
+            continue
+        key = f"release_gap_{r['releaseGap']}_box_{r['boxWidth']}_St{r['St_case']}_{r['cpd']}"
+        metrics[f"{key}_shift"] = round(float(r["e_over_edry"]) - float(b[0]["e_over_edry"]), 4)
+        metrics[f"{key}_shift_after_film"] = round(
+            (float(r["e_after_film"]) - float(b[0]["e_after_film"])) / E_DRY, 4)
     for (cpd, key), spread in start_spreads(rows).items():
         metrics[f"start_shift_spread{key}_{cpd}"] = round(spread, 4)
     for cpd, sel in same_gap_rows(rows).items():
@@ -360,7 +409,8 @@ def start_groups(rows):
     position (start shifts of a fraction of a cell)."""
     groups = {}
     for r in rows:
-        if r["maxOverlap"] == "0.1" and r["saturation"] == "0.001" and r["virtualMass"] == "0.5":
+        if (r["maxOverlap"] == "0.1" and r["saturation"] == "0.001" and r["virtualMass"] == "0.5"
+                and default_geometry(r)):
             groups.setdefault((r["St_case"], int(r["cpd"])), []).append(r)
     return {k: sorted(v, key=lambda r: float(r["startShift"])) for k, v in groups.items()
             if len(v) > 1}
@@ -407,6 +457,42 @@ def start_table(rows):
     return lines
 
 
+def geometry_table(rows):
+    """Markdown: the runs released from another gap or in a wider box (the default settings
+    otherwise) beside the same case in the validation's set-up."""
+    other = [r for r in rows if not default_geometry(r)]
+    if not other:
+        return []
+    base = {(r["St_case"], r["cpd"]): r for r in rows
+            if default_position(r) and (r["maxOverlap"], r["saturation"], r["virtualMass"])
+            == ("0.1", "0.001", "0.5")}
+    lines = ["Release gap and box width: the same case released higher (`--release-gap`, the "
+             "box 3 d higher than the gap) or in a wider box (`--box-width`), the default "
+             "settings otherwise:", "",
+             "| case | cells/d | release gap/d | box width/d | U_in [m/s] | St | e/e_dry | "
+             "exp(-35/St) | error | e/e_dry after the film | top gap/a | "
+             + " | ".join(f"e({h:g} a)/e_dry" for h in SAME_GAPS) + " |",
+             "|---|---|---|---|---|---|---|---|---|---|---|" + "---|" * len(SAME_GAPS)]
+    shown = set()
+    for r in sorted(other, key=lambda r: (int(r["cpd"]), float(r["St_case"]),
+                                          float(r["releaseGap"]), float(r["boxWidth"]))):
+        for x in ([base[(r["St_case"], r["cpd"])]] if (r["St_case"], r["cpd"]) in base else []) + [r]:
+            if x["name"] in shown:
+                continue
+            shown.add(x["name"])
+            same = same_gap_restitution(os.path.join(RESULTS, f"{x['name']}.h5"),
+                                        x["name"].split("-c")[0])
+            lines.append(f"| St {x['St_case']} | {x['cpd']} | "
+                         f"{x.get('releaseGap') or f'{DEFAULT_RELEASE_GAP:g}'} | "
+                         f"{x.get('boxWidth') or f'{DEFAULT_BOX_WIDTH:g}'} | "
+                         f"{float(x['U_in']):.3f} | {float(x['St']):.1f} | "
+                         f"{float(x['e_over_edry']):.3f} | {float(x['master']):.3f} | "
+                         f"{float(x['e_over_edry']) - float(x['master']):+.3f} | "
+                         f"{float(x['e_after_film']) / E_DRY:.3f} | {float(x['top_gap_a']):.3f} | "
+                         + " | ".join(f"{v:.3f}" for v in same) + " |")
+    return lines
+
+
 def film_estimate(st, cpd, saturation):
     """e/e_dry of quasi-steady Stokes lubrication alone: the sphere loses I/St of its speed
     between the collision onset (4 resolved gaps of 0.62 cells) and the saturation gap on the
@@ -430,7 +516,7 @@ def film_table(rows):
              "| exp(-35/St) |",
              "|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        if r["maxOverlap"] != "0.1" or r["virtualMass"] != "0.5" or r["startShift"] != "0":
+        if r["maxOverlap"] != "0.1" or r["virtualMass"] != "0.5" or not default_position(r):
             continue
         est = film_estimate(float(r["St"]), int(r["cpd"]), float(r["saturation"]))
         lines.append(f"| St {r['St_case']} | {r['cpd']} | {r['saturation']} | {float(r['St']):.0f} | "
@@ -459,7 +545,7 @@ def do_plot():
     rows.sort(key=lambda r: (int(r["cpd"]), -float(r["maxOverlap"]), -float(r["saturation"]),
                              float(r["virtualMass"]), float(r["St_case"])))
     for r in rows:
-        if r["startShift"] != "0":
+        if not default_position(r):
             continue
         err = float(r["e_over_edry"]) - float(r["master"])
         lines.append(f"| St {r['St_case']} (Gondret) | {r['cpd']} | {r['maxOverlap']} | "
@@ -476,6 +562,8 @@ def do_plot():
     lines += [""] + same_gap_table(rows)
     start = start_table(rows)
     lines += [""] + start if start else []
+    geometry = geometry_table(rows)
+    lines += [""] + geometry if geometry else []
     with open(os.path.join(RESULTS, "table.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
@@ -496,7 +584,7 @@ def do_plot():
         for k, (cpd, ov, sat, cv) in enumerate(series):
             sel = [r for r in rows
                    if int(r["cpd"]) == cpd and r["maxOverlap"] == ov and r["saturation"] == sat
-                   and r["virtualMass"] == cv and r["startShift"] == "0"]
+                   and r["virtualMass"] == cv and default_position(r)]
             if not all(r.get(key) for r in sel):
                 continue
             what = (f"{cpd} cells/d, maxOverlap {ov}" + (f", saturation {sat}" if sat != "0.001" else "")
@@ -536,7 +624,7 @@ def do_plot():
 
     fig, ax = plt.subplots(figsize=(6, 4))
     for r in sorted(rows, key=lambda r: float(r["St_case"])):
-        if r["startShift"] != "0":
+        if not default_position(r):
             continue
         h5 = os.path.join(RESULTS, f"{r['name']}.h5")
         if not os.path.exists(h5):
@@ -577,6 +665,10 @@ def main():
                    help="virtualMass C_v (default: the library's, 0.5); its own rows")
     r.add_argument("--start-shift", type=float, default=None,
                    help="release gap raised by this many cells, [0, 1); its own rows")
+    r.add_argument("--release-gap", type=float, default=None,
+                   help="gap at the release in d (default 2; the box is 3 d higher); its own rows")
+    r.add_argument("--box-width", type=float, default=None,
+                   help="the box's width in d (default 4); its own rows")
     r.add_argument("--force", action="store_true")
     r.add_argument("--quick", action="store_true")
     sp.add_parser("plot")
@@ -599,12 +691,16 @@ def main():
         sys.exit(f"wetRebound: --virtual-mass {args.virtual_mass}: allowed [0, 10]")
     if args.start_shift is not None and not 0 <= args.start_shift < 1:
         sys.exit(f"wetRebound: --start-shift {args.start_shift}: allowed [0, 1) cells")
+    if args.release_gap is not None and not 1 <= args.release_gap <= 20:
+        sys.exit(f"wetRebound: --release-gap {args.release_gap}: allowed [1, 20] d")
+    if args.box_width is not None and not 3 <= args.box_width <= 12:
+        sys.exit(f"wetRebound: --box-width {args.box_width}: allowed [3, 12] d")
     if args.quick:
         run_one("St152", 6, True, True)
         return
     for name in (args.case or sorted(CASES, key=lambda n: CASES[n][0])):
         run_one(name, args.cpd, args.force, False, args.max_overlap, args.saturation,
-                args.virtual_mass, args.start_shift)
+                args.virtual_mass, args.start_shift, args.release_gap, args.box_width)
 
 
 if __name__ == "__main__":

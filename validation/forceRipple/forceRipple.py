@@ -29,7 +29,9 @@ runRe: the same sphere at Re 10 relative to the mean flow (nu = 0.1, U_b =
      departure from Galilean invariance (a moving body's drag against a fixed
      one's), the moving drag's standard deviation over its last 4 cells (linear
      trend removed) its ripple. Pairs for the time schemes Euler and backward,
-     Courant number U_b dt/h 0.25 and 0.125, 8, 12 and 16 cells/D; rows in
+     Courant number U_b dt/h 0.25 and 0.125, 8, 12 and 16 cells/D; and at
+     Re 1.5 (nu = 1/1.5, to t = 5, the means over the last 2.5), the Reynolds
+     number of ten Cate's E1, with Euler at co 0.25 and 0.075 (E1's); rows in
      results/runsRe.csv.
 split: the moving sphere of runRe at 8 cells/D (Euler, co 0.25) for 3 time units
      with the module's debug output, which splits the penalty force into the
@@ -38,8 +40,8 @@ split: the moving sphere of runRe at 8 cells/D (Euler, co 0.25) for 3 time units
      and the numbers of terms; results/split.md.
 plot: results/table.md, results/metrics.json (ripple_pct_8, ripple_pct_16:
      the default forcing's; ripple_pct_8_cutCell, ripple_pct_16_cutCell; from
-     runRe: ripple_pct_<cpd>_Re10_<ddt>, galilean_difference_pct_<cpd>_Re10_<ddt>,
-     with _co0.125 for the halved step), results/forceRipple.png and
+     runRe: ripple_pct_<cpd>_Re<Re>_<ddt>, galilean_difference_pct_<cpd>_Re<Re>_<ddt>,
+     with _co<co> for a step other than co 0.25), results/forceRipple.png and
      results/forceRippleRe10.png.
 """
 import argparse
@@ -75,8 +77,11 @@ RE_U_MEAN = 0.5
 RE_T_END = 10.0
 RE_WINDOW = 4.0
 RE_RIPPLE_CELLS = 4
+# Reynolds number -> (nu, end time, averaging window at its end): Re 10 runs 2.5 viscous times
+# of the box, Re 1.5 (that of ten Cate's E1, validation/tenCate) about 8
+RE_RUNS = {10.0: (RE_NU, RE_T_END, RE_WINDOW), 1.5: (1 / 1.5, 5.0, 2.5)}
 RUNS_RE_CSV = os.path.join(RESULTS, "runsRe.csv")
-RE_FIELDS = ["name", "cpd", "motion", "ddt", "co", "dt", "cells", "steps", "mean_Fx",
+RE_FIELDS = ["name", "re", "cpd", "motion", "ddt", "co", "dt", "cells", "steps", "mean_Fx",
              "ripple_pct", "cpu_s", "host", "date", "commit"]
 FIELDS = ["name", "forcing", "cpd", "lambda", "dt", "cells", "steps", "t_start", "t_end",
           "mean_Fx", "std_Fx", "ripple_pct", "max_minus_min_pct", "cpu_s", "host", "date",
@@ -129,21 +134,24 @@ def run_one(name, cpd, forcing):
 
 
 def campaign_re():
-    """(name, settings) of the Re 10 pairs: each (cpd, ddt, co) moving and fixed."""
-    sets = [(8, "Euler", 0.25), (8, "Euler", 0.125), (8, "backward", 0.25),
-            (8, "backward", 0.125), (12, "Euler", 0.25), (12, "backward", 0.25),
-            (16, "backward", 0.25)]
-    return [(re_name(cpd, motion, ddt, co), dict(cpd=cpd, motion=motion, ddt=ddt, co=co))
-            for cpd, ddt, co in sets for motion in ("moving", "fixed")]
+    """(name, settings) of the finite-Re pairs: each (Re, cpd, ddt, co) moving and fixed; at
+    Re 1.5 with Euler at the Courant number of ten Cate's E1 runs (U dt/h about 0.075)."""
+    sets = [(10.0, 8, "Euler", 0.25), (10.0, 8, "Euler", 0.125), (10.0, 8, "backward", 0.25),
+            (10.0, 8, "backward", 0.125), (10.0, 12, "Euler", 0.25), (10.0, 12, "backward", 0.25),
+            (10.0, 16, "backward", 0.25), (1.5, 8, "Euler", 0.25), (1.5, 8, "Euler", 0.075),
+            (1.5, 12, "Euler", 0.075)]
+    return [(re_name(cpd, motion, ddt, co, re), dict(cpd=cpd, motion=motion, ddt=ddt, co=co, re=re))
+            for re, cpd, ddt, co in sets for motion in ("moving", "fixed")]
 
 
-def re_name(cpd, motion, ddt, co):
-    return f"re10-c{cpd}-{motion}-{ddt}" + ("" if co == 0.25 else f"-co{co:g}")
+def re_name(cpd, motion, ddt, co, re=10.0):
+    return f"re{re:g}-c{cpd}-{motion}-{ddt}" + ("" if co == 0.25 else f"-co{co:g}")
 
 
-def write_re_case(case, cpd, motion, ddt, co, t_end, debug=False):
-    """Write and mesh a run of the Re 10 campaign in case (see runRe); debug: with the
-    module's debug output. Returns its step and number of steps."""
+def write_re_case(case, cpd, motion, ddt, co, t_end, debug=False, nu=RE_NU):
+    """Write and mesh a run of the finite-Re campaign in case (see runRe); debug: with the
+    module's debug output; nu: the viscosity (Re = (U_b - U_mean)/nu). Returns its step and
+    number of steps."""
     h = 1.0 / cpd
     dt = co * h / RE_U_BODY
     steps = int(round(t_end / dt))
@@ -153,7 +161,7 @@ def write_re_case(case, cpd, motion, ddt, co, t_end, debug=False):
         flow = dict(ubar=(RE_U_MEAN, 0.0, 0.0), body_velocity=(RE_U_BODY, 0.0, 0.0))
     else:
         flow = dict(ubar=(RE_U_MEAN - RE_U_BODY, 0.0, 0.0))
-    caseWriter.write_case(case, 1.0, "x", BOX, cpd, dt, steps * dt, nu=RE_NU, ddt=ddt,
+    caseWriter.write_case(case, 1.0, "x", BOX, cpd, dt, steps * dt, nu=nu, ddt=ddt,
                           write_interval=steps, centre=centre, **flow)
     # uniform cells over the whole box: the moving body crosses the periodic faces
     half = 0.5 * BOX
@@ -168,12 +176,13 @@ def write_re_case(case, cpd, motion, ddt, co, t_end, debug=False):
     return dt, steps
 
 
-def run_one_re(name, cpd, motion, ddt, co):
-    """One run of the Re 10 campaign; the drag history goes to results/<name>.dat."""
+def run_one_re(name, cpd, motion, ddt, co, re=10.0):
+    """One run of the finite-Re campaign; the drag history goes to results/<name>.dat."""
+    nu, t_end, averaged = RE_RUNS[re]
     case = os.path.join(HERE, "run", name)
     if os.path.exists(case):
         subprocess.run(["rm", "-rf", case], check=True)
-    dt, steps = write_re_case(case, cpd, motion, ddt, co, RE_T_END)
+    dt, steps = write_re_case(case, cpd, motion, ddt, co, t_end, nu=nu)
     print(f"{name}: {mesh_cells(case)} cells, dt {dt:.4g}, {steps} steps", flush=True)
     rc = run_logged(["nice", "-n", "10", "pimpleFoam"], case, "log.solver")
     if rc != 0:
@@ -183,8 +192,8 @@ def run_one_re(name, cpd, motion, ddt, co):
         raise RuntimeError(f"{case}: {len(times)} force samples, {steps} steps expected")
     np.savetxt(os.path.join(RESULTS, f"{name}.dat"), np.column_stack([times, F[:, 0]]),
                header="t, F_x", fmt="%.10g")
-    window = times > RE_T_END - RE_WINDOW
-    return dict(name=name, cpd=cpd, motion=motion, ddt=ddt, co=f"{co:g}", dt=f"{dt:.6g}",
+    window = times > t_end - averaged
+    return dict(name=name, re=f"{re:g}", cpd=cpd, motion=motion, ddt=ddt, co=f"{co:g}", dt=f"{dt:.6g}",
                 cells=mesh_cells(case), steps=steps,
                 mean_Fx=f"{float(np.mean(F[window, 0])):.8g}",
                 ripple_pct=f"{re_ripple_pct(times, F[:, 0], cpd):.5f}",
@@ -334,45 +343,52 @@ def finish_figure(fig, ax, xlabel, title, name, legend_size):
 
 
 def plot_re(plt, metrics):
-    """The Re 10 campaign: its table (markdown lines), metrics and figure."""
+    """The finite-Re campaign: its tables (markdown lines), metrics and the Re 10 figure."""
     rows = {r["name"]: r for r in read_csv(RUNS_RE_CSV)}
     if not rows:
         return []
-    md = ["", "## Re 10: a moving sphere against its fixed twin", "",
-          "Produced by `validation/forceRipple/Allrun -plot` from results/runsRe.csv "
-          f"(`forceRipple.py runRe`). Sphere, L/D = {BOX:g}, uniform cells, nu = {RE_NU:g}, "
-          f"body velocity {RE_U_BODY:g} through the mean flow {RE_U_MEAN:g} (Re "
-          f"{(RE_U_BODY - RE_U_MEAN) / RE_NU:g}), its fixed twin in the mean flow "
-          f"{RE_U_MEAN - RE_U_BODY:g}; Courant number co = U_b dt/h. Mean drags over t = "
-          f"{RE_T_END - RE_WINDOW:g}-{RE_T_END:g}; difference = moving/fixed - 1; ripple = "
-          f"std/mean of the moving drag over its last {RE_RIPPLE_CELLS} cells (trend removed).",
-          "", "| cells/D | time scheme | co | cells | steps | F_x fixed | F_x moving | "
-          "difference [%] | ripple [%] | CPU moving + fixed [s] |",
-          "|---|---|---|---|---|---|---|---|---|---|"]
+    md = []
     fig, ax = plt.subplots(figsize=(7, 4.2))
-    for name, kw in campaign_re():
-        if kw["motion"] != "moving":
-            continue
-        fixed = rows.get(re_name(kw["cpd"], "fixed", kw["ddt"], kw["co"]))
-        moving = rows.get(name)
-        if fixed is None or moving is None:
-            continue
-        diff = 100 * (float(moving["mean_Fx"]) / float(fixed["mean_Fx"]) - 1)
-        ripple = float(moving["ripple_pct"])
-        md.append(f"| {kw['cpd']} | {kw['ddt']} | {kw['co']:g} | {moving['cells']} | "
-                  f"{moving['steps']} | {float(fixed['mean_Fx']):.5f} | "
-                  f"{float(moving['mean_Fx']):.5f} | {diff:+.3f} | {ripple:.3f} | "
-                  f"{moving['cpu_s']} + {fixed['cpu_s']} |")
-        suffix = f"{kw['cpd']}_Re10_{kw['ddt']}" + ("" if kw["co"] == 0.25 else f"_co{kw['co']:g}")
-        metrics[f"galilean_difference_pct_{suffix}"] = round(diff, 4)
-        metrics[f"ripple_pct_{suffix}"] = round(ripple, 4)
-        d = np.loadtxt(os.path.join(RESULTS, f"{name}.dat"))
-        h = 1.0 / kw["cpd"]
-        last = d[:, 0] > d[-1, 0] - 2 * h / RE_U_BODY + 1e-9
-        t = d[last, 0]
-        ax.plot((t - t[0]) * RE_U_BODY / h, (d[last, 1] / np.mean(d[last, 1]) - 1) * 100,
-                ".-" if kw["ddt"] == "backward" else ".--",
-                label=f"{kw['cpd']} cells/D, {kw['ddt']}, co {kw['co']:g}")
+    for re in sorted(RE_RUNS, reverse=True):
+        nu, t_end, averaged = RE_RUNS[re]
+        md += ["", f"## Re {re:g}: a moving sphere against its fixed twin", "",
+               "Produced by `validation/forceRipple/Allrun -plot` from results/runsRe.csv "
+               f"(`forceRipple.py runRe`). Sphere, L/D = {BOX:g}, uniform cells, nu = {nu:.6g}, "
+               f"body velocity {RE_U_BODY:g} through the mean flow {RE_U_MEAN:g} (Re "
+               f"{(RE_U_BODY - RE_U_MEAN) / nu:g}), its fixed twin in the mean flow "
+               f"{RE_U_MEAN - RE_U_BODY:g}; Courant number co = U_b dt/h. Mean drags over t = "
+               f"{t_end - averaged:g}-{t_end:g}; difference = moving/fixed - 1; ripple = "
+               f"std/mean of the moving drag over its last {RE_RIPPLE_CELLS} cells (trend "
+               "removed).",
+               "", "| cells/D | time scheme | co | cells | steps | F_x fixed | F_x moving | "
+               "difference [%] | ripple [%] | CPU moving + fixed [s] |",
+               "|---|---|---|---|---|---|---|---|---|---|"]
+        for name, kw in campaign_re():
+            if kw["motion"] != "moving" or kw["re"] != re:
+                continue
+            fixed = rows.get(re_name(kw["cpd"], "fixed", kw["ddt"], kw["co"], re))
+            moving = rows.get(name)
+            if fixed is None or moving is None:
+                continue
+            diff = 100 * (float(moving["mean_Fx"]) / float(fixed["mean_Fx"]) - 1)
+            ripple = float(moving["ripple_pct"])
+            md.append(f"| {kw['cpd']} | {kw['ddt']} | {kw['co']:g} | {moving['cells']} | "
+                      f"{moving['steps']} | {float(fixed['mean_Fx']):.5f} | "
+                      f"{float(moving['mean_Fx']):.5f} | {diff:+.3f} | {ripple:.3f} | "
+                      f"{moving['cpu_s']} + {fixed['cpu_s']} |")
+            suffix = (f"{kw['cpd']}_Re{re:g}_{kw['ddt']}"
+                      + ("" if kw["co"] == 0.25 else f"_co{kw['co']:g}"))
+            metrics[f"galilean_difference_pct_{suffix}"] = round(diff, 4)
+            metrics[f"ripple_pct_{suffix}"] = round(ripple, 4)
+            if re != 10.0:
+                continue
+            d = np.loadtxt(os.path.join(RESULTS, f"{name}.dat"))
+            h = 1.0 / kw["cpd"]
+            last = d[:, 0] > d[-1, 0] - 2 * h / RE_U_BODY + 1e-9
+            t = d[last, 0]
+            ax.plot((t - t[0]) * RE_U_BODY / h, (d[last, 1] / np.mean(d[last, 1]) - 1) * 100,
+                    ".-" if kw["ddt"] == "backward" else ".--",
+                    label=f"{kw['cpd']} cells/D, {kw['ddt']}, co {kw['co']:g}")
     finish_figure(fig, ax, "distance travelled [cells] (the last two)",
                   "Drag of a sphere moving through the cells at Re 10", "forceRippleRe10.png", 7)
     return md

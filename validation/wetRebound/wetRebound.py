@@ -695,6 +695,11 @@ def main():
         sys.exit(f"wetRebound: --release-gap {args.release_gap}: allowed [1, 20] d")
     if args.box_width is not None and not 3 <= args.box_width <= 12:
         sys.exit(f"wetRebound: --box-width {args.box_width}: allowed [3, 12] d")
+    # the default set-up given explicitly is the default set-up (its rows, not new ones)
+    if args.release_gap == DEFAULT_RELEASE_GAP:
+        args.release_gap = None
+    if args.box_width == DEFAULT_BOX_WIDTH:
+        args.box_width = None
     if args.quick:
         run_one("St152", 6, True, True)
         return

@@ -10,7 +10,9 @@
     hinderedSettling.py quick [--out DIR]
     (every command also takes --ga GA: the Galileo number of a new DIR, default 20, and
     --ddt Euler|backward: the time scheme of a new DIR, default the tutorial's; the
-    reference, a steady fixed sphere, keeps its own)
+    reference, a steady fixed sphere, keeps its own; and --collision
+    lubricationContact|contact: the collision model of a new DIR, default the tutorial's
+    lubricationContact, contact being the same contact without the lubrication correction)
 
 reference: the single sphere's terminal velocity on the mesh of the suspensions (cpd
      cells per D): the sphere held fixed in a uniform stream (validation/finiteReynoldsDrag's
@@ -38,7 +40,8 @@ quick: the smoke version (12 spheres in a 4 D box at 4 cells per D, 4 D/V_g, abo
 
 Units: D = 1, rho_f = 1, |g| = 1, rho_p/rho_f = RATIO, nu = sqrt((RATIO - 1) g D^3)/GA, so the
 gravitational velocity V_g = sqrt((RATIO - 1) g D) = 1 and times are in D/V_g. DIR/results/
-parameters.json records the Galileo number of DIR and its time scheme if not the tutorial's
+parameters.json records the Galileo number of DIR and its time scheme and collision model if
+not the tutorial's
 (its other values are fixed here); at a Galileo number other than 20 the campaign is the three
 core runs.
 """
@@ -74,6 +77,8 @@ GA = DEFAULT_GA           # of the results folder in use (set_galileo)
 NU = math.sqrt(RATIO - 1.0) / GA
 DDT = None                # time scheme of the results folder in use (None: the tutorial's)
 DDT_SCHEMES = ("Euler", "backward")
+COLLISION = "lubricationContact"   # collision model of the results folder in use
+COLLISION_MODELS = ("lubricationContact", "contact")   # the tutorial's; without lubrication
 PARAMETERS = "parameters.json"   # the Galileo number of a results folder
 END_TIME = 100.0          # D/V_g, of the side runs
 CORE_END_TIME = 200.0     # D/V_g, of the core runs and the second packing
@@ -147,27 +152,26 @@ def set_galileo(results, ga):
             f.write("\n")
 
 
-def set_time_scheme(results, ddt):
-    """The time scheme of the results folder: ddt (None: the folder's own, else the
-    tutorial's), recorded in results/parameters.json; a folder keeps the one it was made
-    with."""
-    global DDT
+def set_folder_choice(results, key, flag, value, default):
+    """The setting key of the results folder: value (None: the folder's own, else default),
+    recorded in results/parameters.json when it is not the default; a folder keeps the one
+    it was made with, so that its runs share it."""
     import json
     path = os.path.join(results, PARAMETERS)
     params = json.load(open(path)) if os.path.exists(path) else {}
-    recorded = params.get("ddt")
-    if ddt is not None and recorded is not None and ddt != recorded:
-        sys.exit(f"hinderedSettling: {path} holds ddt {recorded}, not --ddt {ddt}; use another "
-                 f"--out for another time scheme")
-    if ddt is not None and recorded is None and os.path.exists(os.path.join(results, "runs.csv")):
-        sys.exit(f"hinderedSettling: {results} has runs made with the tutorial's time scheme; "
-                 f"use another --out for --ddt {ddt}")
-    DDT = ddt if ddt is not None else recorded
-    if DDT is not None and recorded is None:
-        params["ddt"] = DDT
+    recorded = params.get(key)
+    if value is not None and value != (recorded or default) and os.path.exists(
+            os.path.join(results, "runs.csv")):
+        made = recorded or default or "of the tutorial"
+        sys.exit(f"hinderedSettling: {results} has runs made with {key} {made}; "
+                 f"use another --out for {flag} {value}")
+    chosen = value if value is not None else recorded
+    if chosen is not None and chosen != default and recorded is None:
+        params[key] = chosen
         with open(path, "w") as f:
             json.dump(params, f)
             f.write("\n")
+    return None if chosen == default else chosen
 
 
 def rowe(re_t):
@@ -346,7 +350,7 @@ meanFlow        {"none" if held is not None else "zeroFlux"};
 
 collision
 {{
-    type            lubricationContact;
+    type            {COLLISION};
     restitution     0.9;
 }}
 
@@ -698,12 +702,20 @@ def main():
         p.add_argument("--ddt", choices=DDT_SCHEMES, default=None,
                        help="time scheme of a new results folder (default: the "
                             "periodicSuspension tutorial's); a folder keeps the one it was made with")
+        p.add_argument("--collision", choices=COLLISION_MODELS, default=None,
+                       help="collision model of a new results folder (default the tutorial's "
+                            "lubricationContact; contact: the same contact without the "
+                            "lubrication correction); a folder keeps the one it was made with")
     args = ap.parse_args()
     if args.out is None:
         args.out = str(HERE / ("run-quick" if args.cmd == "quick" else "."))
     args.out = os.path.abspath(args.out)
     set_galileo(os.path.join(args.out, "results"), args.ga)
-    set_time_scheme(os.path.join(args.out, "results"), args.ddt)
+    global DDT, COLLISION
+    results = os.path.join(args.out, "results")
+    DDT = set_folder_choice(results, "ddt", "--ddt", args.ddt, None)
+    COLLISION = (set_folder_choice(results, "collision", "--collision", args.collision,
+                                   COLLISION_MODELS[0]) or COLLISION_MODELS[0])
     {"reference": do_reference, "run": do_run, "plot": do_plot, "quick": do_quick,
      "array": do_array, "held": do_held}[args.cmd](args)
 

@@ -9,6 +9,7 @@ results/summary.csv, tenCate_E1.png, tenCate_E4.png.
 """
 import glob
 import json
+import math
 import os
 import sys
 from pathlib import Path
@@ -32,8 +33,47 @@ REFERENCE = {        # u_max (m/s), physics-references.md section 1; data files
     "E4": (0.12224, "Re32_2"),
 }
 FLUID_DENSITY = {"E1": 970.0, "E4": 960.0}
+FLUID_VISCOSITY = {"E1": 0.373, "E4": 0.058}   # Pa s
+PARTICLE_DENSITY = 1120.0
+GRAVITY = 9.81
+# ten Cate's u_inf (m/s, Table 1 as printed, physics-references.md section 1); the
+# reference u_max is their u_max/u_inf times it
+TABLE_U_INF = {"E1": 0.038, "E4": 0.128}
 DEFAULT_FORCING = "surfaceCorrected"
 COST_TARGET_PCT = 2.0   # the u_max error whose cost is compared between the forcings
+
+
+def terminal_speed(name, drag_factor):
+    """Terminal speed (m/s) and Reynolds number of the sphere of case name in an unbounded
+    fluid with C_D = 24/Re drag_factor(Re), by fixed-point iteration on the force balance."""
+    rho_f, mu = FLUID_DENSITY[name], FLUID_VISCOSITY[name]
+    stokes = (PARTICLE_DENSITY - rho_f) * GRAVITY * D ** 2 / (18.0 * mu)
+    u = stokes
+    for _ in range(200):
+        u = stokes / drag_factor(rho_f * u * D / mu)
+    return u, rho_f * u * D / mu
+
+
+def abraham(re):
+    """Abraham (1970): C_D = 24/9.06^2 (1 + 9.06/sqrt(Re))^2, as a factor on 24/Re."""
+    return (1.0 + math.sqrt(re) / 9.06) ** 2
+
+
+def clift(re):
+    """The standard drag curve (Clift, Grace & Weber 1978, Table 5.2), as a factor on 24/Re."""
+    if re <= 20.0:
+        return 1.0 + 0.1315 * re ** (0.82 - 0.05 * math.log10(re))
+    return 1.0 + 0.1935 * re ** 0.6305
+
+
+def unrounded_reference(name):
+    """ten Cate's u_inf is Abraham's terminal speed for the case's parameters (it reproduces
+    the printed u_inf and Re of E1 and E4 to their digits); their ratio u_max/u_inf taken
+    with the unrounded u_inf instead of the printed one gives this u_max (m/s). Returns it
+    with Abraham's u_inf and the standard curve's unbounded terminal speed."""
+    u_abraham, _ = terminal_speed(name, abraham)
+    ratio = REFERENCE[name][0] / TABLE_U_INF[name]
+    return ratio * u_abraham, u_abraham, terminal_speed(name, clift)[0]
 
 
 def load_reference(name):
@@ -112,6 +152,7 @@ def main():
         uref = REFERENCE[name][0]
         # the digitised velocity curve's own largest speed, beside the table value uref
         ucurve = float(-u_ref[:, 1].min())
+        unrounded = unrounded_reference(name)[0]
         # velocity error over the data's time range (interpolated to the data's times)
         inside = u_ref[:, 0] <= t[-1]
         u_sim = np.interp(u_ref[inside, 0], t, w)
@@ -150,6 +191,8 @@ def main():
                          steps=info.get("steps", ""), wallSeconds=info.get("wallSeconds", ""),
                          umax=umax, umaxRef=uref, umaxError=(umax - uref) / uref,
                          umaxCurve=ucurve, umaxErrorVsCurve=(umax - ucurve) / ucurve,
+                         umaxUnrounded=unrounded,
+                         umaxErrorVsUnrounded=(umax - unrounded) / unrounded,
                          rmsUError=rms_u, maxGapError=max_gap, endTime=t[-1],
                          rmsUErrorApproach=rms_u_far, maxGapErrorApproach=max_gap_far,
                          startOffset=start_offset, maxGapErrorApproachShifted=max_gap_far_shifted,
@@ -219,6 +262,12 @@ def main():
         metrics[f"{key}_umax_error_pct"] = round(100 * r["umaxError"], 4)
         metrics[f"{key}_umax_error_vs_data_curve_max_pct"] = round(100 * r["umaxErrorVsCurve"], 4)
         metrics[f"{r['case']}_data_curve_umax_m_s"] = round(r["umaxCurve"], 6)
+        metrics[f"{key}_umax_error_vs_unrounded_reference_pct"] = round(
+            100 * r["umaxErrorVsUnrounded"], 4)
+        ref_unrounded, u_abraham, u_clift = unrounded_reference(r["case"])
+        metrics[f"{r['case']}_reference_umax_unrounded_m_s"] = round(ref_unrounded, 6)
+        metrics[f"{r['case']}_abraham_u_inf_m_s"] = round(u_abraham, 6)
+        metrics[f"{r['case']}_unbounded_terminal_speed_clift_m_s"] = round(u_clift, 6)
         metrics[f"{key}_rms_u_error_pct"] = round(100 * r["rmsUError"], 4)
         metrics[f"{key}_max_gap_error_d"] = round(float(r["maxGapError"]), 5)
         metrics[f"{key}_rms_u_error_pct_approach"] = round(100 * r["rmsUErrorApproach"], 4)

@@ -46,15 +46,15 @@ def snapped(box, spacing):
                  else math.ceil(v / spacing - 1e-9) * spacing for i, v in enumerate(box))
 
 
-def levels(cpd):
+def levels(cpd, boxes=BOXES):
     """The base cell size and the snapped refinement boxes for cpd cells per D_eq."""
     h0 = 8.0 / cpd
-    return h0, [snapped(b, h0 / 2 ** k) for k, b in enumerate(BOXES)]
+    return h0, [snapped(b, h0 / 2 ** k) for k, b in enumerate(boxes)]
 
 
-def check_fits(axes, axis, cpd):
+def check_fits(axes, axis, cpd, boxes=BOXES):
     """Exit with a message unless the body plus four fine cells lies in the finest box."""
-    h0, boxes = levels(cpd)
+    h0, boxes = levels(cpd, boxes)
     h = 1.0 / cpd
     e = [axis[0], axis[1], axis[2]]
     n = math.sqrt(sum(c * c for c in e))
@@ -73,14 +73,17 @@ def scaled_domain(scale):
     return tuple(scale * v for v in DOMAIN)
 
 
-def build_mesh(case, cpd, domain=DOMAIN):
-    """blockMesh over domain, then topoSet + refineMesh once per box; logs in case/."""
-    h0, boxes = levels(cpd)
+def build_mesh(case, cpd, domain=DOMAIN, side_walls=False, boxes=BOXES):
+    """blockMesh over domain, then topoSet + refineMesh once per box (boxes, coarsest
+    first, inside domain); logs in case/. The four sides are symmetry planes, or walls if
+    side_walls."""
+    h0, boxes = levels(cpd, boxes)
+    side = "wall" if side_walls else "symmetryPlane"
     refined_box_mesh(case, [
         "--box", *map(str, domain), "--fine", *(f"{v:.12g}" for v in boxes[0]),
         "--h", f"{h0:.12g}", "--growth", "1.25", "--max-ratio", "8",
-        "--patch", "yMin:symmetryPlane", "--patch", "yMax:symmetryPlane",
-        "--patch", "zMin:symmetryPlane", "--patch", "zMax:symmetryPlane"])
+        "--patch", f"yMin:{side}", "--patch", f"yMax:{side}",
+        "--patch", f"zMin:{side}", "--patch", f"zMax:{side}"])
 
     def run(app, log, *args):
         with open(os.path.join(case, log), "w") as out:
@@ -132,17 +135,20 @@ def mesh_cells(case):
     raise RuntimeError(f"{case}/constant/polyMesh/owner: no nCells in its note")
 
 
-def write_case(case, ar, incidence_deg, re, cpd, end_time, courant=1.0, domain=DOMAIN):
+def write_case(case, ar, incidence_deg, re, cpd, end_time, courant=1.0, domain=DOMAIN,
+               side_walls=False, boxes=BOXES):
     """Write and mesh case/ for a body of aspect ratio ar whose symmetry axis makes
     incidence_deg with the stream (x), at Re = U D_eq/nu, cpd cells per D_eq,
     Euler steps dt = courant h / U up to end_time (D_eq/U units), in domain
-    (x0 x1 y0 y1 z0 z1, D_eq units; the refinement boxes stay those of BOXES).
+    (x0 x1 y0 y1 z0 z1, D_eq units) with the refinement boxes boxes.
+    side_walls: the four sides are no-slip walls moving with the stream (the frame of a
+    body settling steadily along a duct) instead of symmetry planes.
     Returns the time step, the step count and the cell count."""
     h = 1.0 / cpd
     axes = semi_axes(ar)
     phi = math.radians(incidence_deg)
     axis = (math.cos(phi), math.sin(phi), 0.0)
-    check_fits(axes, axis, cpd)
+    check_fits(axes, axis, cpd, boxes)
     dt = courant * h
     steps = int(round(end_time / dt))
     write(os.path.join(case, "system", "controlDict"), "dictionary", "system", "controlDict", f"""\
@@ -274,11 +280,13 @@ output
     surfaces        no;
 }}
 """)
-    sides = """
+    side_u, side_p = (("fixedValue;\n        value           uniform (1 0 0)", "zeroGradient")
+                      if side_walls else ("symmetryPlane", "symmetryPlane"))
+    sides_u, sides_p = (f"""
     "(yMin|yMax|zMin|zMax)"
-    {
-        type            symmetryPlane;
-    }"""
+    {{
+        type            {side};
+    }}""" for side in (side_u, side_p))
     write(os.path.join(case, "0", "U"), "volVectorField", "0", "U", f"""\
 dimensions      [0 1 -1 0 0 0 0];
 
@@ -296,7 +304,7 @@ boundaryField
         type            inletOutlet;
         inletValue      uniform (0 0 0);
         value           uniform (1 0 0);
-    }}{sides}
+    }}{sides_u}
 }}
 """)
     write(os.path.join(case, "0", "p"), "volScalarField", "0", "p", f"""\
@@ -314,8 +322,8 @@ boundaryField
     {{
         type            fixedValue;
         value           uniform 0;
-    }}{sides}
+    }}{sides_p}
 }}
 """)
-    build_mesh(case, cpd, domain)
+    build_mesh(case, cpd, domain, side_walls, boxes)
     return dt, steps, mesh_cells(case)

@@ -61,6 +61,7 @@ from validationTools import cpu_seconds, read_csv, run_logged, write_csv, write_
 
 # the unbounded wedge reference's case writer (imported, not modified)
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "finiteReynoldsDrag"))
+import bodyFitted  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 RUN = os.path.join(HERE, "run")
@@ -242,19 +243,8 @@ functions
 }
 """
 
-# second-order convection as in validation/finiteReynoldsDrag/bodyFitted.py
-SCHEMES = """ddtSchemes { default steadyState; }
-gradSchemes { default Gauss linear; }
-divSchemes
-{
-    default none;
-    div(phi,U) bounded Gauss linearUpwind grad(U);
-    div((nuEff*dev2(T(grad(U))))) Gauss linear;
-}
-laplacianSchemes { default Gauss linear corrected; }
-interpolationSchemes { default linear; }
-snGradSchemes { default corrected; }
-"""
+# second-order convection, the schemes of validation/finiteReynoldsDrag/bodyFitted.py
+SCHEMES = bodyFitted.FILES["system/fvSchemes"]
 
 SOLUTION = """solvers
 {
@@ -429,7 +419,6 @@ def write_case(case, mesh, u):
         shutil.rmtree(case)
     if mesh in WEDGES:
         # bodyFitted's case is dimensionless (d = 1, U = 1, nu = 1/Re): the same Re
-        import bodyFitted
         bodyFitted.write_case(case, 1.0, reynolds(u), WEDGES[mesh], 0, ITERATIONS)
         run(["checkMesh"], case, "log.checkMesh")
         return
@@ -457,7 +446,6 @@ def drag_history(case, u=None):
     total z-force of the quarter times 4, over all (continued) runs of the case. A wedge
     case (u its speed): its C_D times rho_f u^2/2 pi d^2/4."""
     if os.path.basename(case).startswith("wedge"):
-        import bodyFitted
         scale = 0.5 * RHO_F * u * u * math.pi * D * D / 4.0
         return [c[0] * scale for c in bodyFitted.read_coefficients(case)]
     root = os.path.join(case, "postProcessing", "forces")

@@ -5,6 +5,7 @@ body-fitted runs, so that the two drags at the same speed measure the forcing's 
 E1's confinement and Reynolds number.
 
     /usr/bin/python3 validation/tenCate/ductReference/ductImmersed.py [--cpd N ...]
+        [--courant C]     (another Courant number: a check, printed and not recorded)
 
 In the sphere's frame (validation/finiteReynoldsDrag's fixed-body case, caseWriter.py):
 the sphere held fixed, the stream and the four side walls moving at U, the inlet 10 d
@@ -52,15 +53,16 @@ def reynolds(u):
     return RHO_F * u * D / MU
 
 
-def run(cpd, u):
-    name = f"immersed-c{cpd}-U{u:.4f}"
+def run(cpd, u, courant=COURANT):
+    name = f"immersed-c{cpd}-U{u:.4f}" + ("" if courant == COURANT else f"-co{courant:g}")
     case = HERE / "run" / name
     if case.exists():
         subprocess.run(["rm", "-rf", str(case)], check=True)
     dt, steps, cells = caseWriter.write_case(str(case), 1.0, 0, reynolds(u), cpd, END_TIME,
-                                             courant=COURANT, domain=DOMAIN, side_walls=True,
+                                             courant=courant, domain=DOMAIN, side_walls=True,
                                              boxes=BOXES)
-    print(f"{name}: Re {reynolds(u):.4f}, {cells} cells, {steps} steps", flush=True)
+    print(f"{name}: Re {reynolds(u):.4f}, {cells} cells, {steps} steps, nu dt/h^2 "
+          f"{courant * cpd / reynolds(u):.2f}", flush=True)
     if run_logged(["nice", "-n", "10", "pimpleFoam"], str(case), "log.solver") != 0:
         raise RuntimeError(f"pimpleFoam failed in {case} (see log.solver)")
     t, force, _ = read_force(str(case))
@@ -102,11 +104,18 @@ def main():
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--cpd", type=int, action="append",
                     help="cells per diameter (repeatable; default 12 and 16)")
+    ap.add_argument("--courant", type=float, default=COURANT,
+                    help=f"Courant number of the steps (default {COURANT:g}; another value "
+                         "runs the first speed as a check, printed and not recorded)")
     ap.add_argument("--report", action="store_true", help="only rewrite the table")
     args = ap.parse_args()
     RESULTS.mkdir(exist_ok=True)
     path = str(RESULTS / "immersed.csv")
     rows = read_csv(path)
+    if args.courant != COURANT:
+        for cpd in args.cpd or [12]:
+            print(run(cpd, SPEEDS[0], args.courant))
+        return
     if not args.report:
         for cpd in args.cpd or [12, 16]:
             for u in SPEEDS:

@@ -24,6 +24,49 @@ def standard_drag_curve(re):
     return 24.0 / re * (1.0 + 0.1935 * re ** 0.6305)
 
 
+def clift_low_re(re):
+    """The standard drag curve of Clift, Grace & Weber (1978, Table 5.2) for
+    0.01 < Re <= 20: C_D = 24/Re (1 + 0.1315 Re^(0.82 - 0.05 log10 Re))."""
+    if not 0.01 < re <= 20:
+        raise ValueError(f"clift_low_re: Re {re} outside its range 0.01-20")
+    return 24.0 / re * (1.0 + 0.1315 * re ** (0.82 - 0.05 * math.log10(re)))
+
+
+def clift(re):
+    """Clift, Grace & Weber's standard drag curve over 0.01 < Re <= 260 (its two branches)."""
+    return clift_low_re(re) if re <= 20 else standard_drag_curve(re)
+
+
+def abraham(re):
+    """Abraham (1970): C_D = 24/9.06^2 (1 + 9.06/sqrt(Re))^2, the correlation ten Cate et
+    al. (2002) took their u_inf from."""
+    return 24.0 / 9.06 ** 2 * (1.0 + 9.06 / math.sqrt(re)) ** 2
+
+
+def terminal_speed(cd, rho_p, rho_f, mu, d, g=9.81, tolerance=1e-12):
+    """(U, Re) of a sphere of diameter d whose drag C_D(Re) rho_f U^2/2 pi d^2/4 equals its
+    net weight (rho_p - rho_f) g pi d^3/6, by bisection between 0.01 and 1 times the Stokes
+    speed (a C_D at or above 24/Re, and below 100 times it, brackets it); raises if the
+    correlation does not bracket it or the bisection does not reach the tolerance."""
+    weight = (rho_p - rho_f) * g * math.pi * d ** 3 / 6.0
+    stokes = (rho_p - rho_f) * g * d ** 2 / (18.0 * mu)
+
+    def excess(u):
+        re = rho_f * u * d / mu
+        return cd(re) * 0.5 * rho_f * u * u * math.pi * d * d / 4.0 - weight
+
+    lo, hi = 0.01 * stokes, stokes
+    if not (excess(lo) < 0.0 <= excess(hi)):
+        raise ValueError(f"terminal_speed: {cd.__name__} does not bracket the balance "
+                         f"between {lo:.3g} and {hi:.3g} m/s")
+    for _ in range(200):
+        u = 0.5 * (lo + hi)
+        lo, hi = (u, hi) if excess(u) < 0.0 else (lo, u)
+        if hi - lo <= tolerance * hi:
+            return hi, rho_f * hi * d / mu
+    raise RuntimeError(f"terminal_speed: no convergence to {tolerance:g} in 200 bisections")
+
+
 # Zastawny, Mallouppas, Zhao, van Wachem (2012, IJMF 39, 227), ellipsoid AR 2.5
 # ("shape 1"): C_D = C_D0 + (C_D90 - C_D0) sin^a0(phi), C_D0 = a1/Re^a2 + a3/Re^a4,
 # C_D90 = a5/Re^a6 + a7/Re^a8, fitted to their resolved simulations for

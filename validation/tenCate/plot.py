@@ -9,7 +9,6 @@ results/summary.csv, tenCate_E1.png, tenCate_E4.png.
 """
 import glob
 import json
-import math
 import os
 import sys
 from pathlib import Path
@@ -22,6 +21,8 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
 from validationTools import read_csv, write_csv  # noqa: E402
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "finiteReynoldsDrag"))
+import references  # noqa: E402  (the drag correlations)
 
 here = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(__file__))
 data_dir = os.environ.get("TENCATE_DATA",
@@ -43,37 +44,17 @@ DEFAULT_FORCING = "surfaceCorrected"
 COST_TARGET_PCT = 2.0   # the u_max error whose cost is compared between the forcings
 
 
-def terminal_speed(name, drag_factor):
-    """Terminal speed (m/s) and Reynolds number of the sphere of case name in an unbounded
-    fluid with C_D = 24/Re drag_factor(Re), by fixed-point iteration on the force balance."""
-    rho_f, mu = FLUID_DENSITY[name], FLUID_VISCOSITY[name]
-    stokes = (PARTICLE_DENSITY - rho_f) * GRAVITY * D ** 2 / (18.0 * mu)
-    u = stokes
-    for _ in range(200):
-        u = stokes / drag_factor(rho_f * u * D / mu)
-    return u, rho_f * u * D / mu
-
-
-def abraham(re):
-    """Abraham (1970): C_D = 24/9.06^2 (1 + 9.06/sqrt(Re))^2, as a factor on 24/Re."""
-    return (1.0 + math.sqrt(re) / 9.06) ** 2
-
-
-def clift(re):
-    """The standard drag curve (Clift, Grace & Weber 1978, Table 5.2), as a factor on 24/Re."""
-    if re <= 20.0:
-        return 1.0 + 0.1315 * re ** (0.82 - 0.05 * math.log10(re))
-    return 1.0 + 0.1935 * re ** 0.6305
-
-
 def unrounded_reference(name):
     """ten Cate's u_inf is Abraham's terminal speed for the case's parameters (it reproduces
     the printed u_inf and Re of E1 and E4 to their digits); their ratio u_max/u_inf taken
     with the unrounded u_inf instead of the printed one gives this u_max (m/s). Returns it
     with Abraham's u_inf and the standard curve's unbounded terminal speed."""
-    u_abraham, _ = terminal_speed(name, abraham)
+    def speed(cd):
+        return references.terminal_speed(cd, PARTICLE_DENSITY, FLUID_DENSITY[name],
+                                         FLUID_VISCOSITY[name], D, GRAVITY)[0]
+    u_abraham = speed(references.abraham)
     ratio = REFERENCE[name][0] / TABLE_U_INF[name]
-    return ratio * u_abraham, u_abraham, terminal_speed(name, clift)[0]
+    return ratio * u_abraham, u_abraham, speed(references.clift)
 
 
 def load_reference(name):

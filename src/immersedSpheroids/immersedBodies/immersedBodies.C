@@ -307,7 +307,7 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
             "contactCellPenalty", "softCellSteps", "subSteps",
             "virtualMass", "bodies", "packing", "output", "collision",
             "filmStabilisation", "filmGap", "filmDampingScale", "viscosity",
-            "meanFlow"
+            "meanFlow", "maxViscousNumber"
         })
     );
     fluidDensity_ = readPositive
@@ -406,6 +406,13 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     );
     ddtScheme_ = immersedSpheroids::ddtCoefficients::read(mesh, UName_);
     meanFlow_.reset(new meanFlowForcing(properties_, mesh_, domain_));
+    viscousLimit_.reset
+    (
+        new viscousNumberLimit
+        (
+            properties_, mesh_, UName_, film.viscosity()/fluidDensity_
+        )
+    );
 
     const bool restarted = readRestartState();
     if (!restarted)
@@ -550,6 +557,7 @@ void Foam::immersedBodies::update(const volVectorField& U)
     forcing_->updateCells(bodies_);
     forcing_->assemble(bodies_, penaltyRatio_*dt, dt, ddt.c);
     meanFlow_->update(bodies_, fluidDensity_, integrator_->g(), U, dt, ddt.c);
+    viscousLimit_->check(bodies_, dt);
     solveDdt_ = ddt;
     lastDeltaT_ = dt;
     updateIndex_ = time.timeIndex();
@@ -576,7 +584,8 @@ void Foam::immersedBodies::update(const volVectorField& U)
     }
     Info<< ", checks " << checksCpu << ", cells "
         << cellsCpu + setupCpu << ", output " << outputCpu
-        << "), penalty (last step) " << lastPenaltyCpu << " s";
+        << "), penalty (last step) " << lastPenaltyCpu << " s"
+        << ", " << viscousLimit_->describe().c_str();
     if (Pstream::parRun())
     {
         // the rank with the most bodies in its cells (each rank's forcing

@@ -1,0 +1,387 @@
+/*---------------------------------------------------------------------------*\
+  spheroidFoam: particle-resolved flows of immersed spheroids for OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later (as OpenFOAM).
+
+\*---------------------------------------------------------------------------*/
+
+#include "viscousNumberLimit.H"
+#include "dictionaryChecks.H"
+#include "surfaceFields.H"
+#include "volFields.H"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+// * * * * * * * * * * * * * * * Local Constants * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using Foam::label;
+using Foam::scalar;
+
+//- The limits the module enforces, from validation/viscousNumber
+//  (results/moduleLimits.md, which derives them from the measured scans):
+//  {free body, momentum predictor, outer correctors (outerMode), pressure
+//  correctors, limit at 16 cells per equal-volume diameter, exponent p},
+//  per motion (free bodies; fixed and prescribed ones), momentum predictor,
+//  outer correctors (viscousNumberLimit::outerMode) and number of pressure
+//  correctors
+struct measuredSetting
+{
+    bool freeBody;
+    bool momentumPredictor;
+    label outer;
+    label nCorrectors;
+    //- The limit at referenceCellsPerDiameter cells per D_eq
+    scalar limit;
+    //- p of the limit's resolution law limit (reference/c)^p
+    scalar exponent;
+};
+
+//- The resolution the table's limits are given at (cells per equal-volume
+//  diameter)
+constexpr scalar referenceCellsPerDiameter = 16;
+
+constexpr measuredSetting measuredLimits[] =
+{
+    // VISCOUS_NUMBER_LIMITS_BEGIN (checked against moduleLimits.md by
+    // tests/foam/viscousNumberQuick)
+    {false, false, 0, 1, 843, 1.28},
+    {false, false, 0, 2, 843, 1.28},
+    {false, true, 0, 1, 0.0865, 1.28},
+    {false, true, 1, 1, 0.0727, 1.28},
+    {false, true, 2, 1, 0.346, 1.28},
+    {false, true, 0, 2, 1.99, 1.25},
+    {false, true, 1, 2, 1.95, 1.28},
+    {false, true, 2, 2, 5.53, 1.28},
+    {false, true, 0, 3, 22.1, 1.28},
+    {false, true, 1, 3, 22.1, 1.28},
+    {false, true, 0, 4, 74.5, 1.28},
+    {true, false, 0, 2, 2.37, 0},
+    {true, true, 0, 2, 2, 0},
+    {true, true, 0, 3, 4.75, 0},
+    {true, true, 0, 4, 6.72, 0}
+    // VISCOUS_NUMBER_LIMITS_END
+};
+
+//- The entry with the motion, predictor and outer correctors (those of one
+//  outer corrector where none was measured) and the most pressure correctors
+//  up to nCorrectors (fewer correctors are the less stable), or else the
+//  fewest above it; nullptr if none
+const measuredSetting* tableEntry
+(
+    const bool freeBody,
+    const bool momentumPredictor,
+    const label outer,
+    const label nCorrectors
+)
+{
+    for (const label mode : {outer, label(0)})
+    {
+        const measuredSetting* below = nullptr;
+        const measuredSetting* above = nullptr;
+        for (const measuredSetting& m : measuredLimits)
+        {
+            if
+            (
+                m.freeBody != freeBody
+             || m.momentumPredictor != momentumPredictor
+             || m.outer != mode
+            )
+            {
+                continue;
+            }
+            if (m.nCorrectors <= nCorrectors)
+            {
+                if (!below || m.nCorrectors > below->nCorrectors)
+                {
+                    below = &m;
+                }
+            }
+            else if (!above || m.nCorrectors < above->nCorrectors)
+            {
+                above = &m;
+            }
+        }
+        if (below || above)
+        {
+            return below ? below : above;
+        }
+    }
+    return nullptr;
+}
+
+//- v to 4 significant digits, for a message
+std::string shortNumber(const scalar v)
+{
+    std::ostringstream os;
+    os << std::setprecision(4) << v;
+    return os.str();
+}
+
+//- v rounded down to 3 significant digits (a bound that stays below v)
+scalar floorSignificant(const scalar v)
+{
+    if (!(v > 0))
+    {
+        return v;
+    }
+    const scalar unit = std::pow(10.0, std::floor(std::log10(v)) - 2);
+    return std::floor(v/unit)*unit;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::viscousNumberLimit::viscousNumberLimit
+(
+    const dictionary& properties,
+    const fvMesh& mesh,
+    const word& UName,
+    const scalar nu
+)
+:
+    mesh_(mesh),
+    UName_(UName),
+    nu_(nu),
+    userLimit_(0),
+    inverseSquareSpacing_(mesh.nCells(), scalar(0)),
+    lastMax_(0),
+    lastLimit_(GREAT)
+{
+    if (properties.found("maxViscousNumber"))
+    {
+        userLimit_ = immersedSpheroids::readPositive
+        (
+            properties, "maxViscousNumber",
+            "the largest viscous number nu deltaT/h^2 allowed in the bodies'"
+            " cells, > 0 (default: the limit measured for the PIMPLE settings"
+            " of system/fvSolution)"
+        );
+    }
+
+    // sum_f |S_f| deltaCoeff_f over each cell's faces, the patches' included
+    // (the diffusion to a wall, or across a processor or cyclic patch)
+    const surfaceScalarField& deltaCoeffs = mesh.nonOrthDeltaCoeffs();
+    const surfaceScalarField& magSf = mesh.magSf();
+    const labelUList& owner = mesh.owner();
+    const labelUList& neighbour = mesh.neighbour();
+    forAll(owner, facei)
+    {
+        const scalar g = magSf[facei]*deltaCoeffs[facei];
+        inverseSquareSpacing_[owner[facei]] += g;
+        inverseSquareSpacing_[neighbour[facei]] += g;
+    }
+    forAll(mesh.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh.boundary()[patchi];
+        const scalarField& pd = deltaCoeffs.boundaryField()[patchi];
+        const scalarField& pS = magSf.boundaryField()[patchi];
+        const labelUList& cells = patch.faceCells();
+        forAll(cells, i)
+        {
+            inverseSquareSpacing_[cells[i]] += pS[i]*pd[i];
+        }
+    }
+    inverseSquareSpacing_ /= 6*mesh.V().field();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::viscousNumberLimit::settings
+Foam::viscousNumberLimit::readSettings() const
+{
+    settings s{word::null, true, 1, 1, label(outerMode::single)};
+    const dictionary& solution = mesh_.solutionDict();
+    for (const word algorithm : {"PIMPLE", "PISO"})
+    {
+        if (solution.found(algorithm))
+        {
+            const dictionary& dict = solution.subDict(algorithm);
+            // the defaults of OpenFOAM's solutionControl and pisoControl
+            s.dictName = algorithm;
+            s.momentumPredictor =
+                dict.lookupOrDefault<bool>("momentumPredictor", true);
+            s.nCorrectors = dict.lookupOrDefault<label>("nCorrectors", 1);
+            s.nOuterCorrectors =
+                dict.lookupOrDefault<label>("nOuterCorrectors", 1);
+            // the outer correctors but the last may relax the momentum
+            // equation
+            s.outer =
+                s.nOuterCorrectors <= 1 ? label(outerMode::single)
+              : mesh_.relaxEquation(UName_)
+             && mesh_.equationRelaxationFactor(UName_) < 1
+              ? label(outerMode::relaxed)
+              : label(outerMode::unrelaxed);
+            break;
+        }
+    }
+    return s;
+}
+
+
+Foam::scalar Foam::viscousNumberLimit::measuredLimit
+(
+    const bool freeBody,
+    const bool momentumPredictor,
+    const label outer,
+    const label nCorrectors,
+    const scalar cellsPerDiameter
+)
+{
+    auto atResolution = [cellsPerDiameter](const measuredSetting& m)
+    {
+        return
+            m.limit
+           *std::pow(referenceCellsPerDiameter/cellsPerDiameter, m.exponent);
+    };
+    // a fixed body's limit bounds a free one's (the body's response to the
+    // force adds to the coupling's instability)
+    const measuredSetting* fixed =
+        tableEntry(false, momentumPredictor, outer, nCorrectors);
+    const scalar fixedLimit = fixed ? atResolution(*fixed) : 0;
+    if (!freeBody)
+    {
+        return fixedLimit;
+    }
+    const measuredSetting* free =
+        tableEntry(true, momentumPredictor, outer, nCorrectors);
+    return free ? min(fixedLimit, atResolution(*free)) : fixedLimit;
+}
+
+
+Foam::scalar Foam::viscousNumberLimit::limit
+(
+    const immersedBody& body,
+    const scalar cellsPerDiameter
+) const
+{
+    if (userLimit_ > 0)
+    {
+        return userLimit_;
+    }
+    const settings s = readSettings();
+    return
+        s.dictName.empty()
+      ? GREAT
+      : measuredLimit
+        (
+            body.motion().isFree(), s.momentumPredictor, s.outer,
+            s.nCorrectors, cellsPerDiameter
+        );
+}
+
+
+std::string Foam::viscousNumberLimit::describe() const
+{
+    return
+        "viscous number " + shortNumber(lastMax_) + " (limit "
+      + (lastLimit_ < GREAT ? shortNumber(lastLimit_) : std::string("none"))
+      + ")";
+}
+
+
+Foam::scalar Foam::viscousNumberLimit::check
+(
+    const PtrList<immersedBody>& bodies,
+    const scalar dt
+)
+{
+    // per body: the largest viscous number over its cells (on every rank)
+    scalarList bodyMax(bodies.size(), scalar(0));
+    forAll(bodies, bodyi)
+    {
+        for (const label celli : bodies[bodyi].cells())
+        {
+            bodyMax[bodyi] =
+                max(bodyMax[bodyi], nu_*dt*inverseSquareSpacing_[celli]);
+        }
+    }
+    Pstream::listCombineGather(bodyMax, maxEqOp<scalar>());
+    Pstream::listCombineScatter(bodyMax);
+
+    // per body: its cells per equal-volume diameter at its finest cell
+    // (lambda = nu dt/h^2) and its limit there
+    scalarList bodyLimit(bodies.size(), GREAT);
+    scalarList bodyCells(bodies.size(), scalar(0));
+    label worst = -1;
+    forAll(bodies, bodyi)
+    {
+        if (!(bodyMax[bodyi] > 0))
+        {
+            continue;
+        }
+        const vector& axes = bodies[bodyi].semiAxes();
+        bodyCells[bodyi] =
+            2*std::cbrt(axes.x()*axes.y()*axes.z())
+           *std::sqrt(bodyMax[bodyi]/(nu_*dt));
+        bodyLimit[bodyi] = limit(bodies[bodyi], bodyCells[bodyi]);
+        if
+        (
+            worst < 0
+         || bodyMax[bodyi]/bodyLimit[bodyi] > bodyMax[worst]/bodyLimit[worst]
+        )
+        {
+            worst = bodyi;
+        }
+    }
+    lastMax_ = bodyMax.empty() ? 0 : max(bodyMax);
+    lastLimit_ = bodyLimit.empty() ? GREAT : min(bodyLimit);
+    if (worst < 0 || bodyMax[worst] <= bodyLimit[worst])
+    {
+        return lastMax_;
+    }
+
+    const immersedBody& body = bodies[worst];
+    const scalar lambda = bodyMax[worst];
+    const scalar lim = bodyLimit[worst];
+    const scalar cells = bodyCells[worst];
+    const bool freeBody = body.motion().isFree();
+    const settings s = readSettings();
+    const string where =
+        userLimit_ > 0
+      ? string("maxViscousNumber of constant/immersedBodiesProperties")
+      : string
+        (
+            "the limit measured (validation/viscousNumber) for a "
+          + word(freeBody ? "free" : "fixed or prescribed") + " body at "
+          + shortNumber(cells) + " cells per equal-volume diameter with "
+          + s.dictName + " momentumPredictor "
+          + word(s.momentumPredictor ? "yes" : "no") + ", nCorrectors "
+          + Foam::name(s.nCorrectors) + " and nOuterCorrectors "
+          + Foam::name(s.nOuterCorrectors)
+          + (s.outer == label(outerMode::relaxed) ? " (relaxed)" : "")
+          + " in system/fvSolution"
+        );
+    FatalErrorInFunction
+        << "the viscous number nu deltaT/h^2 in the cells of body '"
+        << body.name() << "' is " << shortNumber(lambda).c_str()
+        << " at deltaT " << shortNumber(dt).c_str() << ", above "
+        << shortNumber(lim).c_str() << ", " << where.c_str() << nl
+        << "    Above it the pressure-velocity coupling grows a period-two"
+        << " oscillation until the run fails." << nl
+        << "    Allowed: deltaT <= "
+        << shortNumber(floorSignificant(dt*lim/lambda)).c_str()
+        << " (maxDeltaT in system/controlDict), or settings with a higher"
+        << " limit for this body: momentumPredictor yes with nCorrectors"
+        << " 2 / 3 / 4: "
+        << shortNumber(measuredLimit(freeBody, true, s.outer, 2, cells)).c_str()
+        << " / "
+        << shortNumber(measuredLimit(freeBody, true, s.outer, 3, cells)).c_str()
+        << " / "
+        << shortNumber(measuredLimit(freeBody, true, s.outer, 4, cells)).c_str()
+        << ", or maxViscousNumber in constant/immersedBodiesProperties"
+        << " for a set-up shown stable above it."
+        << exit(FatalError);
+    return lastMax_;
+}
+
+
+// ************************************************************************* //

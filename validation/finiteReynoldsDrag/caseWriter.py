@@ -136,7 +136,7 @@ def mesh_cells(case):
 
 
 def write_case(case, ar, incidence_deg, re, cpd, end_time, courant=1.0, domain=DOMAIN,
-               side_walls=False, boxes=BOXES):
+               side_walls=False, boxes=BOXES, max_viscous_number=None):
     """Write and mesh case/ for a body of aspect ratio ar whose symmetry axis makes
     incidence_deg with the stream (x), at Re = U D_eq/nu, cpd cells per D_eq,
     Euler steps dt = courant h / U up to end_time (D_eq/U units), in domain
@@ -261,6 +261,7 @@ nu              {1.0 / re:.12g};
     write(os.path.join(case, "constant", "immersedBodiesProperties"), "dictionary", "constant",
           "immersedBodiesProperties", f"""\
 fluidDensity    1;
+{"" if max_viscous_number is None else f"maxViscousNumber {max_viscous_number:g};"}
 
 bodies
 {{

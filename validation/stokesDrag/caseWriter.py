@@ -39,14 +39,15 @@ def fine_half_widths(axes, h, margin):
 def write_case(case, ar, flow, box, cpd, dt, end_time, u=0.02, nu=1.0,
                penalty_ratio=None, forcing=None, margin=0.25, growth=1.1, max_ratio=4.0,
                ddt="Euler", write_interval=None, ubar=None, body_velocity=None,
-               centre=(0.0, 0.0, 0.0)):
+               centre=(0.0, 0.0, 0.0), max_viscous_number=None):
     """Write case/ (system, constant, 0) for a body of aspect ratio ar with its
     symmetry (body x) axis along world x, in a triply periodic box of side
     box (D_eq units), flow direction flow = 'x' (axial) or 'y' (transverse),
     cpd cells per D_eq in the fine region, Euler steps dt up to end_time.
     ubar: the superficial velocity held (default u along the flow directions);
     body_velocity: a prescribed constant velocity of the body (default fixed),
-    which starts at centre."""
+    which starts at centre; max_viscous_number: the module's limit of nu dt/h^2 in the body's
+    cells (maxViscousNumber; default: the one measured for the case's PIMPLE settings)."""
     h = 1.0 / cpd
     axes = semi_axes(ar)
     fine = fine_half_widths(axes, h, margin)
@@ -195,8 +196,9 @@ nu              {nu:.12g};
               "{ type prescribed; velocity (" + " ".join(f"{v:.12g}" for v in body_velocity)
               + "); angularVelocity (0 0 0); }")
     # the module's defaults unless a run asks for another forcing or penalty
-    settings = "".join(f"{k:<16}{v};\n" for k, v in (("forcing", forcing),
-                                                      ("penaltyRatio", penalty_ratio))
+    settings = "".join(f"{k:<15} {v};\n" for k, v in (("forcing", forcing),
+                                                      ("penaltyRatio", penalty_ratio),
+                                                      ("maxViscousNumber", max_viscous_number))
                        if v is not None)
     write(os.path.join(case, "constant", "immersedBodiesProperties"), "dictionary", "constant",
           "immersedBodiesProperties", f"""\

@@ -58,9 +58,15 @@ def run(cpd, u, courant=COURANT):
     case = HERE / "run" / name
     if case.exists():
         subprocess.run(["rm", "-rf", str(case)], check=True)
+    # at the default Courant number the viscous number is 2.3 at 12 and 3.1 at 16 cells/D,
+    # the latter above the module's limit there (1.99, measured on the Stokes flow in a
+    # periodic box, validation/viscousNumber); these runs are stable (their drag's
+    # period-two oscillation decays), so the limit is raised for them alone
+    raise_limit = courant == COURANT and courant * cpd / reynolds(u) > 2
     dt, steps, cells = caseWriter.write_case(str(case), 1.0, 0, reynolds(u), cpd, END_TIME,
                                              courant=courant, domain=DOMAIN, side_walls=True,
-                                             boxes=BOXES)
+                                             boxes=BOXES,
+                                             max_viscous_number=4 if raise_limit else None)
     print(f"{name}: Re {reynolds(u):.4f}, {cells} cells, {steps} steps, nu dt/h^2 "
           f"{courant * cpd / reynolds(u):.2f}", flush=True)
     if run_logged(["nice", "-n", "10", "pimpleFoam"], str(case), "log.solver") != 0:

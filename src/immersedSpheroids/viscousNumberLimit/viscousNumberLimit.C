@@ -260,14 +260,14 @@ Foam::scalar Foam::viscousNumberLimit::measuredLimit
 Foam::scalar Foam::viscousNumberLimit::limit
 (
     const immersedBody& body,
-    const scalar cellsPerDiameter
+    const scalar cellsPerDiameter,
+    const settings& s
 ) const
 {
     if (userLimit_ > 0)
     {
         return userLimit_;
     }
-    const settings s = readSettings();
     return
         s.dictName.empty()
       ? GREAT
@@ -309,6 +309,7 @@ Foam::scalar Foam::viscousNumberLimit::check
 
     // per body: its cells per equal-volume diameter at its finest cell
     // (lambda = nu dt/h^2) and its limit there
+    const settings s = readSettings();
     scalarList bodyLimit(bodies.size(), GREAT);
     scalarList bodyCells(bodies.size(), scalar(0));
     label worst = -1;
@@ -322,7 +323,7 @@ Foam::scalar Foam::viscousNumberLimit::check
         bodyCells[bodyi] =
             2*std::cbrt(axes.x()*axes.y()*axes.z())
            *std::sqrt(bodyMax[bodyi]/(nu_*dt));
-        bodyLimit[bodyi] = limit(bodies[bodyi], bodyCells[bodyi]);
+        bodyLimit[bodyi] = limit(bodies[bodyi], bodyCells[bodyi], s);
         if
         (
             worst < 0
@@ -344,7 +345,6 @@ Foam::scalar Foam::viscousNumberLimit::check
     const scalar lim = bodyLimit[worst];
     const scalar cells = bodyCells[worst];
     const bool freeBody = body.motion().isFree();
-    const settings s = readSettings();
     const string where =
         userLimit_ > 0
       ? string("maxViscousNumber of constant/immersedBodiesProperties")

@@ -93,6 +93,7 @@ SETTINGS = {
     "pred_c2_o3": ("yes", 2, 3, None),
     "pred_c2_o3_relax": ("yes", 2, 3, (0.7, 0.3)),
     "pred_c3_o3": ("yes", 3, 3, None),
+    "pred_c2_consistent": ("yes", 2, 1, None),
     "nopred_c1": ("no", 1, 1, None),
     "nopred_c2": ("no", 2, 1, None),
 }
@@ -108,12 +109,14 @@ CASES = {
     #        base run length, settings scanned, the body's aspect ratio)
     "sphere6": ("body", 6, 1.6, ["pred_c2", "pred_c3"], 1.0),
     "sphere8": ("body", 8, 1.6, list(SETTINGS), 1.0),
-    "sphere12": ("body", 12, 1.6, ["pred_c2", "pred_c3", "nopred_c2"], 1.0),
-    "sphere16": ("body", 16, 0.8, ["pred_c2", "pred_c3"], 1.0),
+    "sphere12": ("body", 12, 1.6, ["pred_c2", "pred_c3", "nopred_c2", "pred_c2_consistent"],
+                 1.0),
+    "sphere16": ("body", 16, 0.8, ["pred_c2", "pred_c3", "pred_c2_consistent"], 1.0),
     "prolate8": ("body", 8, 1.6, ["pred_c2"], 2.0),
     "oblate8": ("body", 8, 1.6, ["pred_c2"], 0.5),
     # free settling: cells across the 60 mm box width
-    "settling24": ("settling", 24, None, ["pred_c2", "pred_c3", "pred_c4", "nopred_c2"], None),
+    "settling24": ("settling", 24, None,
+                   ["pred_c2", "pred_c3", "pred_c4", "nopred_c2", "pred_c2_consistent"], None),
     "settling36": ("settling", 36, None, ["pred_c2", "pred_c3"], None),
     # the same with backward steps (the README's advice for moving bodies)
     "sphere8_backward": ("body", 8, 1.6, ["pred_c2", "pred_c3"], 1.0),
@@ -323,6 +326,9 @@ def run_test(name, setting, lam):
     set_entry(solution, "momentumPredictor", predictor)
     set_entry(solution, "nCorrectors", str(correctors))
     set_entry(solution, "nOuterCorrectors", str(outer))
+    if setting.endswith("_consistent"):
+        # SIMPLEC's form of the pressure equation (pimpleControl's consistent)
+        substitute(solution, "nOuterCorrectors", "consistent      yes;\n    nOuterCorrectors")
     if relax is not None:
         with open(solution, "a") as f:
             f.write("relaxationFactors\n{\n    equations { U %g; UFinal 1; }\n"
@@ -469,19 +475,21 @@ def do_plot(_args):
         if first is not None:
             metrics[f"first_unstable_{name}_{setting}"] = first
     mod = module_limits(lim)
-    mlines = ["| body | momentumPredictor | nCorrectors | outer correctors | limit at "
-              f"{REFERENCE_CPD} cells/D_eq | exponent p | C++ entry |",
-              "|---|---|---|---|---|---|---|"]
+    mlines = ["| body | momentumPredictor | consistent | nCorrectors | outer correctors | "
+              f"limit at {REFERENCE_CPD} cells/D_eq | exponent p | C++ entry |",
+              "|---|---|---|---|---|---|---|---|"]
     for (free, setting), (value, p) in sorted(mod.items(), key=lambda kv: kv[0]):
         predictor, correctors, outer, relax = SETTINGS[setting]
         # viscousNumberLimit::outerMode: single, unrelaxed, relaxed
         mode = 0 if outer == 1 else (2 if relax else 1)
         v, p = floor3(value), round(p, 2)
         metrics[f"module_limit_{'free' if free else 'fixed'}_{setting}"] = v
+        consistent = setting.endswith("_consistent")
         mlines.append(f"| {'free' if free else 'fixed or prescribed'} | {predictor} | "
+                      f"{'yes' if consistent else 'no'} | "
                       f"{correctors} | {('1', 'several', 'several, relaxed')[mode]} | {v:g} | "
                       f"{p:g} | {{{str(free).lower()}, {str(predictor == 'yes').lower()}, "
-                      f"{mode}, {correctors}, {v:g}, {p:g}}} |")
+                      f"{str(consistent).lower()}, {mode}, {correctors}, {v:g}, {p:g}}} |")
     hosts = sorted({r["host"] for r in rows})
     commits = sorted({r["commit"] for r in rows})
     os.makedirs(RESULTS, exist_ok=True)
@@ -518,7 +526,7 @@ def do_plot(_args):
         ax.legend(fontsize=7)
     axes[0].set_ylabel("growth per step (diverged: 10)")
     ax = axes[2]
-    for setting, colour in (("pred_c2", "C1"), ("pred_c3", "C2")):
+    for setting, colour in (("pred_c2", "C1"), ("pred_c3", "C2"), ("pred_c2_consistent", "C4")):
         cpd, lam = [], []
         for name in ("sphere6", "sphere8", "sphere12", "sphere16"):
             stable = lim.get((name, setting), (None, None))[0]
@@ -530,7 +538,7 @@ def do_plot(_args):
         if fit is not None:
             metrics[f"cpd_exponent_{setting}"] = round(fit, 2)
     mod = module_limits(lim)
-    for setting, colour in (("pred_c2", "C1"), ("pred_c3", "C2")):
+    for setting, colour in (("pred_c2", "C1"), ("pred_c3", "C2"), ("pred_c2_consistent", "C4")):
         cpd = [settling_cells_per_diameter(CASES[n][1])
                for n in FREE_CASES if (n, setting) in lim]
         lam = [lim[(n, setting)][0] for n in FREE_CASES if (n, setting) in lim]
@@ -573,14 +581,15 @@ def module_limits(lim):
     """The limits viscousNumberLimit.C enforces, derived from the scans:
     {(free, setting): (lambda at REFERENCE_CPD cells per D_eq, exponent p)}, the limit of a
     body at c cells per D_eq being lambda (REFERENCE_CPD/c)^p. A fixed (or prescribed) body's
-    p is the exponent fitted over the spheres at 8-16 cells/D for nCorrectors 2 and 3
-    (cpd_exponent), the larger of the two for the settings run on sphere8 alone; its lambda is
+    p is the exponent fitted over the spheres at 8-16 cells/D for each setting run at two or
+    more of them (cpd_exponent), for the others the larger of those of nCorrectors 2 and 3
+    with the standard pressure equation; its lambda is
     the smallest over the fixed cases that ran the setting, each moved to REFERENCE_CPD with
     p (the spheroids included). A free body's limit is the smallest over the settling cases
     (p = 0: the same at 5.5 and 8.2 cells per D_eq); viscousNumberLimit.C bounds it by the
     fixed body's at the body's resolution."""
-    exps = {s: cpd_exponent(lim, s) for s in ("pred_c2", "pred_c3")}
-    known = [e for e in exps.values() if e is not None]
+    exps = {s: cpd_exponent(lim, s) for s in SETTINGS}
+    known = [exps[s] for s in ("pred_c2", "pred_c3") if exps[s] is not None]
     p_other = max(known) if known else 1.0
     out = {}
     for setting in SETTINGS:

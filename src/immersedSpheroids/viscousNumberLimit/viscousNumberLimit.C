@@ -25,8 +25,9 @@ using Foam::scalar;
 
 //- The limits the module enforces, from validation/viscousNumber
 //  (results/moduleLimits.md, which derives them from the measured scans):
-//  {free body, momentum predictor, outer correctors (outerMode), pressure
-//  correctors, limit at 16 cells per equal-volume diameter, exponent p},
+//  {free body, momentum predictor, consistent (SIMPLEC), outer correctors
+//  (outerMode), pressure correctors, limit at 16 cells per equal-volume
+//  diameter, exponent p},
 //  per motion (free bodies; fixed and prescribed ones), momentum predictor,
 //  outer correctors (viscousNumberLimit::outerMode) and number of pressure
 //  correctors
@@ -34,6 +35,7 @@ struct measuredSetting
 {
     bool freeBody;
     bool momentumPredictor;
+    bool consistent;
     label outer;
     label nCorrectors;
     //- The limit at referenceCellsPerDiameter cells per D_eq
@@ -50,66 +52,74 @@ constexpr measuredSetting measuredLimits[] =
 {
     // VISCOUS_NUMBER_LIMITS_BEGIN (checked against moduleLimits.md by
     // tests/foam/viscousNumberQuick)
-    {false, false, 0, 1, 843, 1.28},
-    {false, false, 0, 2, 843, 1.28},
-    {false, true, 0, 1, 0.0865, 1.28},
-    {false, true, 1, 1, 0.0727, 1.28},
-    {false, true, 2, 1, 0.346, 1.28},
-    {false, true, 0, 2, 1.99, 1.25},
-    {false, true, 1, 2, 1.95, 1.28},
-    {false, true, 2, 2, 5.53, 1.28},
-    {false, true, 0, 3, 22.1, 1.28},
-    {false, true, 1, 3, 22.1, 1.28},
-    {false, true, 0, 4, 74.5, 1.28},
-    {true, false, 0, 2, 2.37, 0},
-    {true, true, 0, 2, 2, 0},
-    {true, true, 0, 3, 4.75, 0},
-    {true, true, 0, 4, 6.72, 0}
+    {false, false, false, 0, 1, 843, 1.28},
+    {false, false, false, 0, 2, 2040, 0},
+    {false, true, false, 0, 1, 0.0865, 1.28},
+    {false, true, false, 1, 1, 0.0727, 1.28},
+    {false, true, false, 2, 1, 0.346, 1.28},
+    {false, true, false, 0, 2, 1.99, 1.25},
+    {false, true, true, 0, 2, 4.41, 0.26},
+    {false, true, false, 1, 2, 1.95, 1.28},
+    {false, true, false, 2, 2, 5.53, 1.28},
+    {false, true, false, 0, 3, 22.1, 1.28},
+    {false, true, false, 1, 3, 22.1, 1.28},
+    {false, true, false, 0, 4, 74.5, 1.28},
+    {true, false, false, 0, 2, 2.37, 0},
+    {true, true, false, 0, 2, 2, 0},
+    {true, true, true, 0, 2, 4, 0},
+    {true, true, false, 0, 3, 4.75, 0},
+    {true, true, false, 0, 4, 6.72, 0}
     // VISCOUS_NUMBER_LIMITS_END
 };
 
-//- The entry with the motion, predictor and outer correctors (those of one
-//  outer corrector where none was measured) and the most pressure correctors
-//  up to nCorrectors (fewer correctors are the less stable), or else the
-//  fewest above it; nullptr if none
+//- The entry with the motion, predictor, pressure equation (the standard
+//  one's where the consistent one was not measured) and outer correctors
+//  (those of one outer corrector where none was measured), and the most
+//  pressure correctors up to nCorrectors (fewer correctors are the less
+//  stable), or else the fewest above it; nullptr if none
 const measuredSetting* tableEntry
 (
     const bool freeBody,
     const bool momentumPredictor,
+    const bool consistent,
     const label outer,
     const label nCorrectors
 )
 {
-    for (const label mode : {outer, label(0)})
+    for (const bool simplec : {consistent, false})
     {
-        const measuredSetting* below = nullptr;
-        const measuredSetting* above = nullptr;
-        for (const measuredSetting& m : measuredLimits)
+        for (const label mode : {outer, label(0)})
         {
-            if
-            (
-                m.freeBody != freeBody
-             || m.momentumPredictor != momentumPredictor
-             || m.outer != mode
-            )
+            const measuredSetting* below = nullptr;
+            const measuredSetting* above = nullptr;
+            for (const measuredSetting& m : measuredLimits)
             {
-                continue;
-            }
-            if (m.nCorrectors <= nCorrectors)
-            {
-                if (!below || m.nCorrectors > below->nCorrectors)
+                if
+                (
+                    m.freeBody != freeBody
+                 || m.momentumPredictor != momentumPredictor
+                 || m.consistent != simplec
+                 || m.outer != mode
+                )
                 {
-                    below = &m;
+                    continue;
+                }
+                if (m.nCorrectors <= nCorrectors)
+                {
+                    if (!below || m.nCorrectors > below->nCorrectors)
+                    {
+                        below = &m;
+                    }
+                }
+                else if (!above || m.nCorrectors < above->nCorrectors)
+                {
+                    above = &m;
                 }
             }
-            else if (!above || m.nCorrectors < above->nCorrectors)
+            if (below || above)
             {
-                above = &m;
+                return below ? below : above;
             }
-        }
-        if (below || above)
-        {
-            return below ? below : above;
         }
     }
     return nullptr;
@@ -198,7 +208,7 @@ Foam::viscousNumberLimit::viscousNumberLimit
 Foam::viscousNumberLimit::settings
 Foam::viscousNumberLimit::readSettings() const
 {
-    settings s{word::null, true, 1, 1, label(outerMode::single)};
+    settings s{word::null, true, false, 1, 1, label(outerMode::single)};
     const dictionary& solution = mesh_.solutionDict();
     for (const word algorithm : {"PIMPLE", "PISO"})
     {
@@ -209,6 +219,7 @@ Foam::viscousNumberLimit::readSettings() const
             s.dictName = algorithm;
             s.momentumPredictor =
                 dict.lookupOrDefault<bool>("momentumPredictor", true);
+            s.consistent = dict.lookupOrDefault<bool>("consistent", false);
             s.nCorrectors = dict.lookupOrDefault<label>("nCorrectors", 1);
             s.nOuterCorrectors =
                 dict.lookupOrDefault<label>("nOuterCorrectors", 1);
@@ -231,6 +242,7 @@ Foam::scalar Foam::viscousNumberLimit::measuredLimit
 (
     const bool freeBody,
     const bool momentumPredictor,
+    const bool consistent,
     const label outer,
     const label nCorrectors,
     const scalar cellsPerDiameter
@@ -245,14 +257,14 @@ Foam::scalar Foam::viscousNumberLimit::measuredLimit
     // a fixed body's limit bounds a free one's (the body's response to the
     // force adds to the coupling's instability)
     const measuredSetting* fixed =
-        tableEntry(false, momentumPredictor, outer, nCorrectors);
+        tableEntry(false, momentumPredictor, consistent, outer, nCorrectors);
     const scalar fixedLimit = fixed ? atResolution(*fixed) : 0;
     if (!freeBody)
     {
         return fixedLimit;
     }
     const measuredSetting* free =
-        tableEntry(true, momentumPredictor, outer, nCorrectors);
+        tableEntry(true, momentumPredictor, consistent, outer, nCorrectors);
     return free ? min(fixedLimit, atResolution(*free)) : fixedLimit;
 }
 
@@ -273,8 +285,8 @@ Foam::scalar Foam::viscousNumberLimit::limit
       ? GREAT
       : measuredLimit
         (
-            body.motion().isFree(), s.momentumPredictor, s.outer,
-            s.nCorrectors, cellsPerDiameter
+            body.motion().isFree(), s.momentumPredictor, s.consistent,
+            s.outer, s.nCorrectors, cellsPerDiameter
         );
 }
 
@@ -354,7 +366,8 @@ Foam::scalar Foam::viscousNumberLimit::check
           + word(freeBody ? "free" : "fixed or prescribed") + " body at "
           + shortNumber(cells) + " cells per equal-volume diameter with "
           + s.dictName + " momentumPredictor "
-          + word(s.momentumPredictor ? "yes" : "no") + ", nCorrectors "
+          + word(s.momentumPredictor ? "yes" : "no")
+          + (s.consistent ? ", consistent yes" : "") + ", nCorrectors "
           + Foam::name(s.nCorrectors) + " and nOuterCorrectors "
           + Foam::name(s.nOuterCorrectors)
           + (s.outer == label(outerMode::relaxed) ? " (relaxed)" : "")
@@ -372,11 +385,13 @@ Foam::scalar Foam::viscousNumberLimit::check
         << " (maxDeltaT in system/controlDict), or settings with a higher"
         << " limit for this body: momentumPredictor yes with nCorrectors"
         << " 2 / 3 / 4: "
-        << shortNumber(measuredLimit(freeBody, true, s.outer, 2, cells)).c_str()
+        << shortNumber(measuredLimit(freeBody, true, false, s.outer, 2, cells)).c_str()
         << " / "
-        << shortNumber(measuredLimit(freeBody, true, s.outer, 3, cells)).c_str()
+        << shortNumber(measuredLimit(freeBody, true, false, s.outer, 3, cells)).c_str()
         << " / "
-        << shortNumber(measuredLimit(freeBody, true, s.outer, 4, cells)).c_str()
+        << shortNumber(measuredLimit(freeBody, true, false, s.outer, 4, cells)).c_str()
+        << ", consistent yes with 2: "
+        << shortNumber(measuredLimit(freeBody, true, true, s.outer, 2, cells)).c_str()
         << ", or maxViscousNumber in constant/immersedBodiesProperties"
         << " for a set-up shown stable above it."
         << exit(FatalError);

@@ -613,9 +613,11 @@ def floor3(x):
 
 def cpd_exponent(lim, setting):
     """p of the fit lambda_c ~ cpd^-p over the spheres at 8 cells/D and finer (least
-    squares in log-log); None with fewer than two."""
+    squares in log-log), from the scans that found an unstable lambda (a scan stable up to
+    the grid's end bounds the limit from below only); None with fewer than two."""
     pts = [(CASES[n][1], lim[(n, setting)][0]) for n in ("sphere8", "sphere12", "sphere16")
-           if lim.get((n, setting), (None, None))[0] is not None]
+           if lim.get((n, setting), (None, None))[0] is not None
+           and lim[(n, setting)][1] is not None]
     if len(pts) < 2:
         return None
     x, y = np.log([p[0] for p in pts]), np.log([p[1] for p in pts])

@@ -27,10 +27,7 @@ using Foam::scalar;
 //  (results/moduleLimits.md, which derives them from the measured scans):
 //  {free body, momentum predictor, consistent (SIMPLEC), outer correctors
 //  (outerMode), pressure correctors, limit at 16 cells per equal-volume
-//  diameter, exponent p},
-//  per motion (free bodies; fixed and prescribed ones), momentum predictor,
-//  outer correctors (viscousNumberLimit::outerMode) and number of pressure
-//  correctors
+//  diameter, exponent p}
 struct measuredSetting
 {
     bool freeBody;
@@ -53,7 +50,7 @@ constexpr measuredSetting measuredLimits[] =
     // VISCOUS_NUMBER_LIMITS_BEGIN (checked against moduleLimits.md by
     // tests/foam/viscousNumberQuick)
     {false, false, false, 0, 1, 843, 1.28},
-    {false, false, false, 0, 2, 2040, 0},
+    {false, false, false, 0, 2, 843, 1.28},
     {false, true, false, 0, 1, 0.0865, 1.28},
     {false, true, false, 1, 1, 0.0727, 1.28},
     {false, true, false, 2, 1, 0.346, 1.28},

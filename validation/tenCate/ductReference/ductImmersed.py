@@ -61,7 +61,7 @@ def run(cpd, u, courant=COURANT):
     # at the default Courant number the viscous number is 2.3 at 12 and 3.1 at 16 cells/D,
     # the latter above the module's limit there (1.99, measured on the Stokes flow in a
     # periodic box, validation/viscousNumber); these runs are stable (their drag's
-    # period-two oscillation decays), so the limit is raised for them alone
+    # period-two oscillation stays at roundoff), so the limit is raised for them alone
     raise_limit = courant == COURANT and courant * cpd / reynolds(u) > 2
     dt, steps, cells = caseWriter.write_case(str(case), 1.0, 0, reynolds(u), cpd, END_TIME,
                                              courant=courant, domain=DOMAIN, side_walls=True,

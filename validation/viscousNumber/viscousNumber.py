@@ -17,12 +17,16 @@ without an immersed body:
      along x);
   prolate8, oblate8: the same for spheroids of aspect ratio 2 and 0.5 (flow
      along the symmetry axis), 8 cells per equal-volume diameter D_eq;
+  sphere8_box6, sphere8_box8: sphere8 in periodic boxes of 6 and 8 D (BOX);
   settling24, settling36: a free spheroid settling from rest (the case of
      tests/foam/settlingSphereCase: semi-axes 9, 6, 6 mm, density ratio 1.17,
      Euler steps of 4 ms) on its mesh of 24 x 24 x 32 cells (5.5 cells per
      D_eq) and refined to 36 x 36 x 48 (8.2); lambda is set through nu; each
      test runs SETTLING_STEPS steps from rest (no base), its signal the body's
      vertical velocity;
+  settling24_ratio0p3, _ratio0p5, _ratio2, _ratio8: settling24 at density
+     ratios 0.3, 0.5, 2 and 8 (SETTLING_DENSITY_RATIO), gravity scaled so
+     that the body's net weight per fluid mass is the same;
   sphere8_backward, settling24_backward: sphere8 and settling24 with backward
      steps (the other cases use Euler);
   cavity: the lid-driven square cavity (32 x 32 cells, side 1, lid speed 1,
@@ -56,7 +60,8 @@ plot: results/table.md, results/metrics.json (limit_<case>_<setting>: the
 quick: the check of tests/foam/viscousNumberQuick, in DIR: sphere8 with the
      default setting (momentum predictor, 2 pressure correctors) must be
      stable at LIMIT (the module's limit for it) and unstable at
-     QUICK_UNSTABLE; exit status 1 otherwise.
+     QUICK_UNSTABLE, and the same sphere in a periodic box of 8 D must be
+     stopped by the module at QUICK_PERIOD_LAMBDA; exit status 1 otherwise.
 """
 import argparse
 import json
@@ -104,6 +109,11 @@ SETTLING_STEPS = 100
 SETTLING_CASE = os.path.join(HERE, "..", "..", "tests", "foam", "settlingSphereCase")
 # quick: a lambda that must be unstable with pred_c2 on sphere8
 QUICK_UNSTABLE = 9
+# quick: a lambda the module must refuse for sphere8 in a periodic box of 8 D (its limit
+# there is that of 16 cells per D_eq, 1.99; 4.73 in the box of 4 D)
+QUICK_PERIOD_LAMBDA = 3
+# the settings scanned on free bodies
+FREE_SETTINGS = ["pred_c2", "pred_c3", "pred_c4", "nopred_c2", "pred_c2_consistent"]
 CASES = {
     # name: (kind, cells per length unit: cells per D_eq or cells per cavity side,
     #        base run length, settings scanned, the body's aspect ratio)
@@ -113,16 +123,36 @@ CASES = {
                  1.0),
     "sphere16": ("body", 16, 0.8, ["pred_c2", "pred_c3", "pred_c2_consistent"], 1.0),
     "prolate8": ("body", 8, 1.6, ["pred_c2"], 2.0),
+    # sphere8 in larger boxes (BOX)
+    "sphere8_box6": ("body", 8, 1.6, ["pred_c2", "pred_c3", "pred_c2_consistent"], 1.0),
+    "sphere8_box8": ("body", 8, 1.6, ["pred_c2", "pred_c3", "pred_c2_consistent"], 1.0),
     "oblate8": ("body", 8, 1.6, ["pred_c2"], 0.5),
     # free settling: cells across the 60 mm box width
-    "settling24": ("settling", 24, None,
-                   ["pred_c2", "pred_c3", "pred_c4", "nopred_c2", "pred_c2_consistent"], None),
+    "settling24": ("settling", 24, None, FREE_SETTINGS, None),
     "settling36": ("settling", 36, None, ["pred_c2", "pred_c3"], None),
+    # the same spheroid at other density ratios (SETTLING_DENSITY_RATIO)
+    **{name: ("settling", 24, None, FREE_SETTINGS, None) for name in
+       ("settling24_ratio0p3", "settling24_ratio0p5", "settling24_ratio2",
+        "settling24_ratio8")},
     # the same with backward steps (the README's advice for moving bodies)
     "sphere8_backward": ("body", 8, 1.6, ["pred_c2", "pred_c3"], 1.0),
     "settling24_backward": ("settling", 24, None, ["pred_c2", "pred_c3"], None),
     "cavity": ("cavity", 32, 0.3, list(SETTINGS), None),
+    "cavity64": ("cavity", 64, 0.3, ["pred_c2", "pred_c3"], None),
+    "cavity128": ("cavity", 128, 0.3, ["pred_c2"], None),
 }
+# the density ratio rho_p/rho_f of a settling case (that of settlingSphereCase, 1120/960,
+# unless named here); gravity is scaled so that (rho_p/rho_f - 1)|g| is the base case's, and a
+# body lighter than the fluid starts as far below the lid as the base case's starts above the
+# floor, so that every body moves as far in its 100 steps
+SETTLING_BASE_RATIO = 1120 / 960
+SETTLING_DENSITY_RATIO = {"settling24_ratio0p3": 0.3, "settling24_ratio0p5": 0.5,
+                          "settling24_ratio2": 2.0, "settling24_ratio8": 8.0}
+# the periodic box's side of a fixed-body case in D_eq (SCANNED_PERIOD unless named here);
+# viscousNumberLimit.C counts a body at c cells per D_eq in a longer period L as one at
+# c L/SCANNED_PERIOD (period_cells)
+SCANNED_PERIOD = 4.0
+BOX = {"sphere8_box6": 6.0, "sphere8_box8": 8.0}
 # the time scheme of a case (Euler unless named here)
 BACKWARD = ("sphere8_backward", "settling24_backward")
 
@@ -234,7 +264,8 @@ def base_case(name):
     steps = int(round(t_end / dt))
     if kind == "body":
         # this campaign runs past the module's viscous-number limit on purpose
-        caseWriter.write_case(base, ar, "x", 4.0, n, dt, steps * dt, max_viscous_number=1e6,
+        caseWriter.write_case(base, ar, "x", BOX.get(name, SCANNED_PERIOD), n, dt, steps * dt,
+                              max_viscous_number=1e6,
                               ddt="backward" if name in BACKWARD else "Euler")
     else:
         write_cavity(base, n)
@@ -282,9 +313,10 @@ def settling_cells_per_diameter(n):
     return 2 * (9 * 6 * 6) ** (1 / 3) / (60 / n)
 
 
-def settling_case(case, n, lam):
+def settling_case(case, n, lam, ratio=None):
     """The settling spheroid of tests/foam/settlingSphereCase in case/, on n x n x 4n/3
-    cells, nu set for nu dt/h^2 = lam, SETTLING_STEPS steps of 4 ms from rest."""
+    cells, nu set for nu dt/h^2 = lam, SETTLING_STEPS steps of 4 ms from rest; with ratio,
+    the body's density is ratio times the fluid's (SETTLING_DENSITY_RATIO)."""
     shutil.copytree(SETTLING_CASE, case)
     shutil.copytree(os.path.join(case, "0.orig"), os.path.join(case, "0"))
     substitute(os.path.join(case, "system", "blockMeshDict"), "(24 24 32)",
@@ -295,8 +327,14 @@ def settling_case(case, n, lam):
     control = os.path.join(case, "system", "controlDict")
     set_entry(control, "deltaT", f"{dt:g}")
     set_entry(control, "endTime", f"{SETTLING_STEPS * dt:g}")
-    substitute(os.path.join(case, "constant", "immersedBodiesProperties"),
-               "fluidDensity", "maxViscousNumber 1e6;\n\nfluidDensity")
+    properties = os.path.join(case, "constant", "immersedBodiesProperties")
+    substitute(properties, "fluidDensity", "maxViscousNumber 1e6;\n\nfluidDensity")
+    if ratio is not None:
+        substitute(properties, "density         1120;", f"density         {960 * ratio:.12g};")
+        g = 9.81 * (SETTLING_BASE_RATIO - 1) / abs(ratio - 1)
+        substitute(os.path.join(case, "constant", "g"), "(0 0 -9.81)", f"(0 0 -{g:.12g})")
+        if ratio < 1:
+            substitute(properties, "(0.0285 0.031 0.05)", "(0.0285 0.031 0.03)")
 
 
 def run_test(name, setting, lam):
@@ -308,7 +346,7 @@ def run_test(name, setting, lam):
     steps = STEPS
     if kind == "settling":
         steps = SETTLING_STEPS
-        settling_case(case, n, lam)
+        settling_case(case, n, lam, SETTLING_DENSITY_RATIO.get(name))
         if name in BACKWARD:
             substitute(os.path.join(case, "system", "fvSchemes"), "default         Euler;",
                        "default         backward;")
@@ -381,7 +419,28 @@ def do_quick(args):
               f"{expected}")
         ok = ok and (row["status"] == expected
                      or (expected == "unstable" and row["status"] == "diverged"))
+    ok = quick_period() and ok
     sys.exit(0 if ok else 1)
+
+
+def quick_period():
+    """sphere8 in a periodic box of 8 D at QUICK_PERIOD_LAMBDA with the module's own limit:
+    the run must stop at its first step with the error naming the period."""
+    case = os.path.join(RUN_DIR, "period")
+    shutil.rmtree(case, ignore_errors=True)
+    dt = QUICK_PERIOD_LAMBDA / CASES["sphere8"][1] ** 2
+    caseWriter.write_case(case, 1.0, "x", 8.0, CASES["sphere8"][1], dt, 2 * dt)
+    if run_logged(["blockMesh"], case, "log.blockMesh") != 0:
+        sys.exit(f"viscousNumber: blockMesh failed in {case}")
+    status = run_logged(["pimpleFoam"], case, "log.pimpleFoam")
+    with open(os.path.join(case, "log.pimpleFoam")) as f:
+        log = f.read()
+    expected = ["FOAM FATAL ERROR", "in the cells of body", "in a period of 8 D_eq"]
+    missing = [e for e in expected if e not in log]
+    print(f"sphere8 in a periodic box of 8 D at lambda {QUICK_PERIOD_LAMBDA:g}: exit status "
+          f"{status}, expected non-zero with {expected}"
+          + (f"; missing: {missing} (see {case}/log.pimpleFoam)" if missing else ""))
+    return status != 0 and not missing
 
 
 def lam_of(k):
@@ -462,12 +521,13 @@ def do_plot(_args):
     rows = read_csv(RUNS_CSV, missing_ok=False)
     lim = limits(rows)
     metrics = {}
-    lines = ["| case | momentumPredictor | nCorrectors | nOuterCorrectors | largest stable "
-             "lambda | first unstable lambda |", "|---|---|---|---|---|---|"]
+    lines = ["| case | momentumPredictor | consistent | nCorrectors | nOuterCorrectors | "
+             "largest stable lambda | first unstable lambda |", "|---|---|---|---|---|---|---|"]
     for (name, setting), (stable, first) in lim.items():
         predictor, correctors, outer, relax = SETTINGS[setting]
         outer = f"{outer} (relaxation U {relax[0]:g}, p {relax[1]:g})" if relax else outer
-        lines.append(f"| {name} | {predictor} | {correctors} | {outer} | "
+        consistent = "yes" if setting.endswith("_consistent") else "no"
+        lines.append(f"| {name} | {predictor} | {consistent} | {correctors} | {outer} | "
                      f"{'-' if stable is None else f'{stable:g}'} | "
                      f"{'> ' + f'{lam_of(K_MAX):g}' if first is None else f'{first:g}'} |")
         if stable is not None:
@@ -475,21 +535,26 @@ def do_plot(_args):
         if first is not None:
             metrics[f"first_unstable_{name}_{setting}"] = first
     mod = module_limits(lim)
-    mlines = ["| body | momentumPredictor | consistent | nCorrectors | outer correctors | "
-              f"limit at {REFERENCE_CPD} cells/D_eq | exponent p | C++ entry |",
-              "|---|---|---|---|---|---|---|---|"]
-    for (free, setting), (value, p) in sorted(mod.items(), key=lambda kv: kv[0]):
+    mlines = ["| body | density ratio | momentumPredictor | consistent | nCorrectors | "
+              f"outer correctors | limit at {REFERENCE_CPD} cells/D_eq | exponent p | C++ entry |",
+              "|---|---|---|---|---|---|---|---|---|"]
+    for (free, setting, ratio), (value, p) in sorted(mod.items(), key=lambda kv: kv[0]):
         predictor, correctors, outer, relax = SETTINGS[setting]
         # viscousNumberLimit::outerMode: single, unrelaxed, relaxed
         mode = 0 if outer == 1 else (2 if relax else 1)
         v, p = floor3(value), round(p, 2)
-        metrics[f"module_limit_{'free' if free else 'fixed'}_{setting}"] = v
+        if free:
+            metrics[f"module_limit_free_{setting}_ratio{ratio:g}".replace(".", "p")] = v
+        else:
+            metrics[f"module_limit_fixed_{setting}"] = v
         consistent = setting.endswith("_consistent")
-        mlines.append(f"| {'free' if free else 'fixed or prescribed'} | {predictor} | "
+        mlines.append(f"| {'free' if free else 'fixed or prescribed'} | "
+                      f"{f'{ratio:g}' if free else 'any'} | {predictor} | "
                       f"{'yes' if consistent else 'no'} | "
                       f"{correctors} | {('1', 'several', 'several, relaxed')[mode]} | {v:g} | "
                       f"{p:g} | {{{str(free).lower()}, {str(predictor == 'yes').lower()}, "
-                      f"{str(consistent).lower()}, {mode}, {correctors}, {v:g}, {p:g}}} |")
+                      f"{str(consistent).lower()}, {mode}, {correctors}, {v:g}, {p:g}, "
+                      f"{ratio:g}}} |")
     hosts = sorted({r["host"] for r in rows})
     commits = sorted({r["commit"] for r in rows})
     os.makedirs(RESULTS, exist_ok=True)
@@ -497,7 +562,9 @@ def do_plot(_args):
         f.write("The limits src/immersedSpheroids/viscousNumberLimit enforces (measuredLimits in "
                 "viscousNumberLimit.C; module_limits() of viscousNumber.py, from table.md): "
                 f"a body at c cells per D_eq has the limit lambda ({REFERENCE_CPD}/c)^p, "
-                "lambda rounded down to 3 digits (a free body at most the fixed body's).\n\n"
+                "lambda rounded down to 3 digits; a free body of density ratio r has the "
+                "smaller of the limits of the two measured ratios that bracket r (the nearest "
+                "measured ratio's outside their range), at most the fixed body's.\n\n"
                 + "\n".join(mlines) + "\n")
     with open(os.path.join(RESULTS, "table.md"), "w") as f:
         f.write("Largest stable viscous number nu dt/h^2 (Euler; lambdas scanned: "
@@ -508,7 +575,7 @@ def do_plot(_args):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, 3, figsize=(16, 4.8))
+    fig, axes = plt.subplots(1, 4, figsize=(21, 4.8))
     for ax, name in zip(axes[:2], ("sphere8", "cavity")):
         for setting in CASES[name][3]:
             rs = sorted((r for r in rows if r["case"] == name and r["setting"] == setting),
@@ -543,8 +610,8 @@ def do_plot(_args):
                for n in FREE_CASES if (n, setting) in lim]
         lam = [lim[(n, setting)][0] for n in FREE_CASES if (n, setting) in lim]
         ax.plot(cpd, lam, "s--", color=colour, mfc="none", label=f"free spheroid, {setting}")
-        if (False, setting) in mod:
-            value, p = mod[(False, setting)]
+        if (False, setting, 0.0) in mod:
+            value, p = mod[(False, setting, 0.0)]
             c = np.array([6.0, REFERENCE_CPD * 2])
             ax.plot(c, floor3(value) * (REFERENCE_CPD / c) ** p, ":", color=colour,
                     label=f"module's limit, fixed, {setting}")
@@ -553,12 +620,34 @@ def do_plot(_args):
         if stable is not None:
             ax.plot([CASES[name][1]], [stable], marker, color="C1",
                     label=f"{name} (AR {CASES[name][4]:g}), pred_c2")
+    for setting, colour in (("pred_c2", "C1"), ("pred_c3", "C2"), ("pred_c2_consistent", "C4")):
+        pts = [(period_cells(n), lim[(n, setting)][0]) for n in BOX
+               if lim.get((n, setting), (None, None))[0] is not None]
+        if pts:
+            ax.plot(*zip(*pts), "D", color=colour, mfc="none",
+                    label=f"sphere8 in boxes of {', '.join(f'{BOX[n]:g}' for n in BOX)} D "
+                          f"at 8 L/{SCANNED_PERIOD:g}, {setting}")
     if ax.lines:
         ax.set_xscale("log")
         ax.set_yscale("log")
     ax.set_xlabel("cells per equal-volume diameter")
     ax.set_ylabel(r"largest stable $\nu\,\Delta t/h^2$")
     ax.set_title("limit against the body's resolution")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7)
+    ax = axes[3]
+    ratio_cases = sorted(["settling24"] + list(SETTLING_DENSITY_RATIO), key=settling_ratio)
+    for i, setting in enumerate(FREE_SETTINGS):
+        pts = [(settling_ratio(n), lim[(n, setting)][0]) for n in ratio_cases
+               if lim.get((n, setting), (None, None))[0] is not None]
+        if pts:
+            ax.plot(*zip(*pts), "s-", color=f"C{i}", label=setting)
+    if ax.lines:
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+    ax.set_xlabel(r"density ratio $\rho_p/\rho_f$")
+    ax.set_ylabel(r"largest stable $\nu\,\Delta t/h^2$")
+    ax.set_title("free spheroid (5.5 cells per D_eq): limit against density ratio")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7)
     fig.tight_layout()
@@ -570,38 +659,53 @@ def do_plot(_args):
     print(json.dumps(metrics, indent=1, sort_keys=True))
 
 
-FIXED_CASES = ["sphere6", "sphere8", "sphere12", "sphere16", "prolate8", "oblate8"]
+FIXED_CASES = ["sphere6", "sphere8", "sphere12", "sphere16", "prolate8", "oblate8",
+               "sphere8_box6", "sphere8_box8"]
 FREE_CASES = ["settling24", "settling36"]
 
 
 REFERENCE_CPD = 16
 
 
+def period_cells(name):
+    """The resolution a fixed-body case counts as in viscousNumberLimit.C: its cells per D_eq
+    times its box's side over SCANNED_PERIOD, where that is larger than one."""
+    return CASES[name][1] * max(1.0, BOX.get(name, SCANNED_PERIOD) / SCANNED_PERIOD)
+
+
+def settling_ratio(name):
+    """The density ratio rho_p/rho_f of settling case name."""
+    return SETTLING_DENSITY_RATIO.get(name, SETTLING_BASE_RATIO)
+
+
 def module_limits(lim):
     """The limits viscousNumberLimit.C enforces, derived from the scans:
-    {(free, setting): (lambda at REFERENCE_CPD cells per D_eq, exponent p)}, the limit of a
-    body at c cells per D_eq being lambda (REFERENCE_CPD/c)^p. A fixed (or prescribed) body's
-    p is the exponent fitted over the spheres at 8-16 cells/D for each setting run at two or
-    more of them (cpd_exponent), for the others the larger of those of nCorrectors 2 and 3
-    with the standard pressure equation; its lambda is
-    the smallest over the fixed cases that ran the setting, each moved to REFERENCE_CPD with
-    p (the spheroids included). A free body's limit is the smallest over the settling cases
-    (p = 0: the same at 5.5 and 8.2 cells per D_eq); viscousNumberLimit.C bounds it by the
-    fixed body's at the body's resolution."""
+    {(free, setting, density ratio): (lambda at REFERENCE_CPD cells per D_eq, exponent p)},
+    the limit of a body at c cells per D_eq being lambda (REFERENCE_CPD/c)^p. A fixed (or
+    prescribed) body's p is the exponent fitted over the spheres at 8-16 cells/D for each
+    setting run at two or more of them (cpd_exponent), for the others the larger of those of
+    nCorrectors 2 and 3 with the standard pressure equation; its lambda is the smallest over
+    the fixed cases that ran the setting, each moved to REFERENCE_CPD with p (the spheroids
+    included); its density ratio is 0 (any). A free body's limit is, per density ratio
+    (rounded down to 3 digits), the smallest over the settling cases of that ratio (p = 0:
+    the same at 5.5 and 8.2 cells per D_eq); viscousNumberLimit.C takes the smaller of the
+    two measured ratios' limits that bracket a body's ratio and bounds it by the fixed
+    body's at the body's resolution."""
     exps = {s: cpd_exponent(lim, s) for s in SETTINGS}
     known = [exps[s] for s in ("pred_c2", "pred_c3") if exps[s] is not None]
     p_other = max(known) if known else 1.0
     out = {}
     for setting in SETTINGS:
         p = exps.get(setting) or p_other
-        vals = [lim[(c, setting)][0] * (CASES[c][1] / REFERENCE_CPD) ** p
+        vals = [lim[(c, setting)][0] * (period_cells(c) / REFERENCE_CPD) ** p
                 for c in FIXED_CASES if (c, setting) in lim and lim[(c, setting)][0]]
         if vals:
-            out[(False, setting)] = (min(vals), p)
-        free = [lim[(c, setting)][0] for c in FREE_CASES
-                if (c, setting) in lim and lim[(c, setting)][0]]
-        if free:
-            out[(True, setting)] = (min(free), 0.0)
+            out[(False, setting, 0.0)] = (min(vals), p)
+        for c in FREE_CASES + list(SETTLING_DENSITY_RATIO):
+            if (c, setting) in lim and lim[(c, setting)][0]:
+                key = (True, setting, floor3(settling_ratio(c)))
+                value = lim[(c, setting)][0]
+                out[key] = (min(value, out.get(key, (value,))[0]), 0.0)
     return out
 
 

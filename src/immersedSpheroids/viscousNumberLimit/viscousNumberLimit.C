@@ -27,7 +27,8 @@ using Foam::scalar;
 //  (results/moduleLimits.md, which derives them from the measured scans):
 //  {free body, momentum predictor, consistent (SIMPLEC), outer correctors
 //  (outerMode), pressure correctors, limit at 16 cells per equal-volume
-//  diameter, exponent p}
+//  diameter, exponent p, density ratio rho_p/rho_f of a free body's scan
+//  (0 for fixed bodies)}
 struct measuredSetting
 {
     bool freeBody;
@@ -39,33 +40,60 @@ struct measuredSetting
     scalar limit;
     //- p of the limit's resolution law limit (reference/c)^p
     scalar exponent;
+    //- The free body's density ratio rho_p/rho_f (0: any)
+    scalar densityRatio;
 };
 
 //- The resolution the table's limits are given at (cells per equal-volume
 //  diameter)
 constexpr scalar referenceCellsPerDiameter = 16;
 
+//- The side of the periodic box of the fixed-body scans, in equal-volume
+//  diameters: in a longer period the limit falls as it does with the
+//  resolution (the scans in boxes of 6 and 8 D_eq)
+constexpr scalar scannedPeriod = 4;
+
 constexpr measuredSetting measuredLimits[] =
 {
     // VISCOUS_NUMBER_LIMITS_BEGIN (checked against moduleLimits.md by
     // tests/foam/viscousNumberQuick)
-    {false, false, false, 0, 1, 843, 1.28},
-    {false, false, false, 0, 2, 843, 1.28},
-    {false, true, false, 0, 1, 0.0865, 1.28},
-    {false, true, false, 1, 1, 0.0727, 1.28},
-    {false, true, false, 2, 1, 0.346, 1.28},
-    {false, true, false, 0, 2, 1.99, 1.25},
-    {false, true, true, 0, 2, 4.41, 0.26},
-    {false, true, false, 1, 2, 1.95, 1.28},
-    {false, true, false, 2, 2, 5.53, 1.28},
-    {false, true, false, 0, 3, 22.1, 1.28},
-    {false, true, false, 1, 3, 22.1, 1.28},
-    {false, true, false, 0, 4, 74.5, 1.28},
-    {true, false, false, 0, 2, 2.37, 0},
-    {true, true, false, 0, 2, 2, 0},
-    {true, true, true, 0, 2, 4, 0},
-    {true, true, false, 0, 3, 4.75, 0},
-    {true, true, false, 0, 4, 6.72, 0}
+    {false, false, false, 0, 1, 843, 1.28, 0},
+    {false, false, false, 0, 2, 843, 1.28, 0},
+    {false, true, false, 0, 1, 0.0865, 1.28, 0},
+    {false, true, false, 1, 1, 0.0727, 1.28, 0},
+    {false, true, false, 2, 1, 0.346, 1.28, 0},
+    {false, true, false, 0, 2, 1.99, 1.25, 0},
+    {false, true, true, 0, 2, 4.41, 0.26, 0},
+    {false, true, false, 1, 2, 1.95, 1.28, 0},
+    {false, true, false, 2, 2, 5.53, 1.28, 0},
+    {false, true, false, 0, 3, 22.1, 1.28, 0},
+    {false, true, false, 1, 3, 22.1, 1.28, 0},
+    {false, true, false, 0, 4, 74.5, 1.28, 0},
+    {true, false, false, 0, 2, 1.68, 0, 0.3},
+    {true, false, false, 0, 2, 1.68, 0, 0.5},
+    {true, false, false, 0, 2, 2.37, 0, 1.16},
+    {true, false, false, 0, 2, 2.82, 0, 2},
+    {true, false, false, 0, 2, 4.75, 0, 8},
+    {true, true, false, 0, 2, 1.68, 0, 0.3},
+    {true, true, false, 0, 2, 1.68, 0, 0.5},
+    {true, true, false, 0, 2, 2, 0, 1.16},
+    {true, true, false, 0, 2, 2.82, 0, 2},
+    {true, true, false, 0, 2, 3.36, 0, 8},
+    {true, true, true, 0, 2, 4, 0, 0.3},
+    {true, true, true, 0, 2, 4, 0, 0.5},
+    {true, true, true, 0, 2, 4, 0, 1.16},
+    {true, true, true, 0, 2, 4, 0, 2},
+    {true, true, true, 0, 2, 4, 0, 8},
+    {true, true, false, 0, 3, 4, 0, 0.3},
+    {true, true, false, 0, 3, 4.75, 0, 0.5},
+    {true, true, false, 0, 3, 4.75, 0, 1.16},
+    {true, true, false, 0, 3, 5.65, 0, 2},
+    {true, true, false, 0, 3, 9.51, 0, 8},
+    {true, true, false, 0, 4, 5.65, 0, 0.3},
+    {true, true, false, 0, 4, 5.65, 0, 0.5},
+    {true, true, false, 0, 4, 6.72, 0, 1.16},
+    {true, true, false, 0, 4, 6.72, 0, 2},
+    {true, true, false, 0, 4, 13.4, 0, 8}
     // VISCOUS_NUMBER_LIMITS_END
 };
 
@@ -122,6 +150,45 @@ const measuredSetting* tableEntry
     return nullptr;
 }
 
+//- The limit of the free entries of setting's settings at densityRatio: the
+//  smaller of the two measured ratios' limits that bracket it (the limit of
+//  the nearest measured ratio outside the measured range)
+scalar freeLimitAt(const measuredSetting& setting, const scalar densityRatio)
+{
+    const measuredSetting* below = nullptr;
+    const measuredSetting* above = nullptr;
+    for (const measuredSetting& m : measuredLimits)
+    {
+        if
+        (
+            !m.freeBody
+         || m.momentumPredictor != setting.momentumPredictor
+         || m.consistent != setting.consistent
+         || m.outer != setting.outer
+         || m.nCorrectors != setting.nCorrectors
+        )
+        {
+            continue;
+        }
+        if (m.densityRatio <= densityRatio)
+        {
+            if (!below || m.densityRatio > below->densityRatio)
+            {
+                below = &m;
+            }
+        }
+        else if (!above || m.densityRatio < above->densityRatio)
+        {
+            above = &m;
+        }
+    }
+    if (below && above)
+    {
+        return Foam::min(below->limit, above->limit);
+    }
+    return below ? below->limit : above->limit;
+}
+
 //- v to 4 significant digits, for a message
 std::string shortNumber(const scalar v)
 {
@@ -151,12 +218,16 @@ Foam::viscousNumberLimit::viscousNumberLimit
     const dictionary& properties,
     const fvMesh& mesh,
     const word& UName,
-    const scalar nu
+    const scalar nu,
+    const scalar fluidDensity,
+    const scalar longestPeriod
 )
 :
     mesh_(mesh),
     UName_(UName),
     nu_(nu),
+    fluidDensity_(fluidDensity),
+    longestPeriod_(longestPeriod),
     userLimit_(0),
     inverseSquareSpacing_(mesh.nCells(), scalar(0)),
     lastMax_(0),
@@ -242,7 +313,8 @@ Foam::scalar Foam::viscousNumberLimit::measuredLimit
     const bool consistent,
     const label outer,
     const label nCorrectors,
-    const scalar cellsPerDiameter
+    const scalar cellsPerDiameter,
+    const scalar densityRatio
 )
 {
     auto atResolution = [cellsPerDiameter](const measuredSetting& m)
@@ -262,7 +334,10 @@ Foam::scalar Foam::viscousNumberLimit::measuredLimit
     }
     const measuredSetting* free =
         tableEntry(true, momentumPredictor, consistent, outer, nCorrectors);
-    return free ? min(fixedLimit, atResolution(*free)) : fixedLimit;
+    return
+        free
+      ? min(fixedLimit, freeLimitAt(*free, densityRatio))
+      : fixedLimit;
 }
 
 
@@ -283,7 +358,8 @@ Foam::scalar Foam::viscousNumberLimit::limit
       : measuredLimit
         (
             body.motion().isFree(), s.momentumPredictor, s.consistent,
-            s.outer, s.nCorrectors, cellsPerDiameter
+            s.outer, s.nCorrectors, cellsPerDiameter,
+            body.density()/fluidDensity_
         );
 }
 
@@ -317,10 +393,13 @@ Foam::scalar Foam::viscousNumberLimit::check
     Pstream::listCombineScatter(bodyMax);
 
     // per body: its cells per equal-volume diameter at its finest cell
-    // (lambda = nu dt/h^2) and its limit there
+    // (lambda = nu dt/h^2) and its limit there; in a periodic domain whose
+    // longest period exceeds the scans' box, at the resolution that has as
+    // many cells across the scans' box as the body has across that period
     const settings s = readSettings();
     scalarList bodyLimit(bodies.size(), GREAT);
     scalarList bodyCells(bodies.size(), scalar(0));
+    scalarList periodScale(bodies.size(), scalar(1));
     label worst = -1;
     forAll(bodies, bodyi)
     {
@@ -329,10 +408,12 @@ Foam::scalar Foam::viscousNumberLimit::check
             continue;
         }
         const vector& axes = bodies[bodyi].semiAxes();
-        bodyCells[bodyi] =
-            2*std::cbrt(axes.x()*axes.y()*axes.z())
-           *std::sqrt(bodyMax[bodyi]/(nu_*dt));
-        bodyLimit[bodyi] = limit(bodies[bodyi], bodyCells[bodyi], s);
+        const scalar dEq = 2*std::cbrt(axes.x()*axes.y()*axes.z());
+        bodyCells[bodyi] = dEq*std::sqrt(bodyMax[bodyi]/(nu_*dt));
+        periodScale[bodyi] =
+            max(scalar(1), longestPeriod_/(scannedPeriod*dEq));
+        bodyLimit[bodyi] =
+            limit(bodies[bodyi], bodyCells[bodyi]*periodScale[bodyi], s);
         if
         (
             worst < 0
@@ -352,16 +433,47 @@ Foam::scalar Foam::viscousNumberLimit::check
     const immersedBody& body = bodies[worst];
     const scalar lambda = bodyMax[worst];
     const scalar lim = bodyLimit[worst];
-    const scalar cells = bodyCells[worst];
+    const scalar cells = bodyCells[worst]*periodScale[worst];
     const bool freeBody = body.motion().isFree();
+    const scalar ratio = body.density()/fluidDensity_;
+    // the limit of this body with the momentum predictor and other pressure
+    // correctors, or the consistent pressure equation
+    auto alternative = [&](const bool consistent, const label nCorrectors)
+    {
+        return
+            shortNumber
+            (
+                measuredLimit
+                (
+                    freeBody, true, consistent, s.outer, nCorrectors, cells,
+                    ratio
+                )
+            );
+    };
     const string where =
         userLimit_ > 0
       ? string("maxViscousNumber of constant/immersedBodiesProperties")
       : string
         (
             "the limit measured (validation/viscousNumber) for a "
-          + word(freeBody ? "free" : "fixed or prescribed") + " body at "
-          + shortNumber(cells) + " cells per equal-volume diameter with "
+          + word
+            (
+                freeBody
+              ? "free body of density ratio " + shortNumber(ratio)
+              : "fixed or prescribed body"
+            )
+          + " at " + shortNumber(bodyCells[worst])
+          + " cells per equal-volume diameter"
+          + (
+                periodScale[worst] > 1
+              ? " in a period of "
+              + shortNumber(scannedPeriod*periodScale[worst])
+              + " D_eq (as limiting as " + shortNumber(cells)
+              + " cells per D_eq in the scans' period of "
+              + shortNumber(scannedPeriod) + " D_eq)"
+              : std::string()
+            )
+          + " with "
           + s.dictName + " momentumPredictor "
           + word(s.momentumPredictor ? "yes" : "no")
           + (s.consistent ? ", consistent yes" : "") + ", nCorrectors "
@@ -381,14 +493,10 @@ Foam::scalar Foam::viscousNumberLimit::check
         << shortNumber(floorSignificant(dt*lim/lambda)).c_str()
         << " (maxDeltaT in system/controlDict), or settings with a higher"
         << " limit for this body: momentumPredictor yes with nCorrectors"
-        << " 2 / 3 / 4: "
-        << shortNumber(measuredLimit(freeBody, true, false, s.outer, 2, cells)).c_str()
-        << " / "
-        << shortNumber(measuredLimit(freeBody, true, false, s.outer, 3, cells)).c_str()
-        << " / "
-        << shortNumber(measuredLimit(freeBody, true, false, s.outer, 4, cells)).c_str()
-        << ", consistent yes with 2: "
-        << shortNumber(measuredLimit(freeBody, true, true, s.outer, 2, cells)).c_str()
+        << " 2 / 3 / 4: " << alternative(false, 2).c_str() << " / "
+        << alternative(false, 3).c_str() << " / "
+        << alternative(false, 4).c_str() << ", consistent yes with 2: "
+        << alternative(true, 2).c_str()
         << ", or maxViscousNumber in constant/immersedBodiesProperties"
         << " for a set-up shown stable above it."
         << exit(FatalError);

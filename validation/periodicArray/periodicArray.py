@@ -242,10 +242,16 @@ def run_with_retry(case, plan, settings, attempts=5):
     import runner
     cpd = plan["cpd_eff"]
     dt1 = min(0.01, 1.44 / cpd ** 2)   # stage 1 as validation/stokesDrag
+    kw = dict(plan["kw"])
+    if plan["box"] >= 8 and cpd >= 12:
+        # stage 1 (viscous number 1.44) is above the module's limit in a period of 8 D at 12
+        # cells/D (1.19, validation/viscousNumber): the phi 0.001 run converges, the limit is
+        # raised
+        kw["max_viscous_number"] = 1.5
     for attempt in range(attempts):
         try:
             return runner.run_case(case, 1.0, "x", plan["box"], cpd, lam=LAMBDA, u=U, dt1=dt1,
-                                   tol=settings["tol"], **plan["kw"])
+                                   tol=settings["tol"], **kw)
         except RuntimeError:
             log = os.path.join(case, "log.solver")
             text = open(log).read() if os.path.exists(log) else ""

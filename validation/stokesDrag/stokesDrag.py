@@ -93,8 +93,13 @@ def campaign(quick=False):
         # b is Hasimoto's (any body): two box sizes fix a and c; the sphere's
         # third size checks the fitted b against Hasimoto's
         for box in ((4, 6, 8) if body == "sphere" else (4, 6)):
-            runs.append(("box", f"{body}-L{box}-c12-lam{LAMBDA_BOX:g}",
-                         dict(body=body, ar=ar, box=box, cpd=12, lam=LAMBDA_BOX)))
+            kw = dict(body=body, ar=ar, box=box, cpd=12, lam=LAMBDA_BOX)
+            if box == 8:
+                # its first stage (viscous number 1.44) is above the module's limit in a
+                # period of 8 D at 12 cells/D (1.19, validation/viscousNumber): the run
+                # converges, the limit is raised
+                kw["max_viscous_number"] = 1.5
+            runs.append(("box", f"{body}-L{box}-c12-lam{LAMBDA_BOX:g}", kw))
     for body, ar in BODIES.items():
         for cpd in (8, 12, 16):
             runs.append((f"resolution-{body}", f"{body}-L4-c{cpd}-lam{LAMBDA:g}",

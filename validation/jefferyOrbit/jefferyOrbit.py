@@ -176,7 +176,6 @@ def do_run(args):
             print(f"  {e}")
             failed = True
             wall = float("nan")
-            info = dict(lam=kw["dt"] * 0.0)
             cells = mesh_cells(case)
         s = summarise(case, kw)
         if failed:

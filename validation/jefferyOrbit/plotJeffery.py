@@ -144,7 +144,6 @@ def main(results):
         ax[0].legend(fontsize=8)
         ax[0].grid(True, alpha=0.3)
         pw = np.mod(phi, math.pi)
-        srt = np.argsort(pw)
         ph = np.linspace(0, math.pi, 400)
         m = t > 0.05
         ax[1].plot(np.degrees(pw[m]), -om[m, 2], "k.", ms=1.5, label="spheroidFoam, -omega_z")

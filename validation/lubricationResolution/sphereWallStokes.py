@@ -681,7 +681,7 @@ def check():
     far = [(x, two_spheres_approaching(x), 1 + 1.5 / (2 + x) + 2.25 / (2 + x) ** 2)
            for x in (100.0, 1000.0)]
     far_err = max(abs(v / r - 1) * (2 + x) ** 3 for x, v, r in far)
-    print(f"   two spheres approaching: lambda - 1/(2 xi) - (9/20) ln(1/xi) = "
+    print("   two spheres approaching: lambda - 1/(2 xi) - (9/20) ln(1/xi) = "
           + ", ".join(f"{v:.5f}" for v in near) + f" at xi = 1e-3, 1e-4, 1e-5 (spread "
           f"{spread:.1e}, tolerance 2e-3): {verdict(spread < 2e-3, 'two spheres, contact')}")
     print(f"   two spheres far apart against 1 + 3s/2 + 9s^2/4: largest |difference|/s^3 "

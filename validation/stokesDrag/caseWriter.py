@@ -95,13 +95,13 @@ OptimisationSwitches
     fileModificationSkew 0;
 }}
 """)
-    write(os.path.join(case, "system", "fvOptions"), "dictionary", "system", "fvOptions", f"""\
+    write(os.path.join(case, "system", "fvOptions"), "dictionary", "system", "fvOptions", """\
 // the immersed body (volume penalisation, constant/immersedBodiesProperties)
 bodies
-{{
+{
     type            immersedBodies;
     libs            ("libimmersedSpheroidsFvOptions.so");
-}}
+}
 
 """ + "".join(f"""
 // holds the {d} component of the superficial velocity (the mean of U over the

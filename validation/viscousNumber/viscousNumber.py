@@ -18,6 +18,9 @@ without an immersed body:
   prolate8, oblate8: the same for spheroids of aspect ratio 2 and 0.5 (flow
      along the symmetry axis), 8 cells per equal-volume diameter D_eq;
   sphere8_box6, sphere8_box8: sphere8 in periodic boxes of 6 and 8 D (BOX);
+  sphere8_open, sphere8_open_small: sphere8 in the inlet-outlet domain of
+     validation/finiteReynoldsDrag at Re 0.02 (nu = 50), sides 12 and 4 D
+     from the sphere (OPEN_DOMAIN);
   settling24, settling36: a free spheroid settling from rest (the case of
      tests/foam/settlingSphereCase: semi-axes 9, 6, 6 mm, density ratio 1.17,
      Euler steps of 4 ms) on its mesh of 24 x 24 x 32 cells (5.5 cells per
@@ -123,6 +126,9 @@ CASES = {
                  1.0),
     "sphere16": ("body", 16, 0.8, ["pred_c2", "pred_c3", "pred_c2_consistent"], 1.0),
     "prolate8": ("body", 8, 1.6, ["pred_c2"], 2.0),
+    # sphere8 in domains with an inlet and an outlet (OPEN_DOMAIN)
+    "sphere8_open": ("body", 8, 1.6, ["pred_c2"], 1.0),
+    "sphere8_open_small": ("body", 8, 1.6, ["pred_c2"], 1.0),
     # sphere8 in larger boxes (BOX)
     "sphere8_box6": ("body", 8, 1.6, ["pred_c2", "pred_c3", "pred_c2_consistent"], 1.0),
     "sphere8_box8": ("body", 8, 1.6, ["pred_c2", "pred_c3", "pred_c2_consistent"], 1.0),
@@ -153,6 +159,11 @@ SETTLING_DENSITY_RATIO = {"settling24_ratio0p3": 0.3, "settling24_ratio0p5": 0.5
 # c L/SCANNED_PERIOD (period_cells)
 SCANNED_PERIOD = 4.0
 BOX = {"sphere8_box6": 6.0, "sphere8_box8": 8.0}
+# fixed-body cases in the domain of validation/finiteReynoldsDrag (a uniform stream from an
+# inlet to an outlet, symmetry sides, the mesh refined towards the body) at Re 0.02:
+# (x0 x1 y0 y1 z0 z1) in D_eq
+OPEN_DOMAIN = {"sphere8_open": (-12.0, 24.0, -12.0, 12.0, -12.0, 12.0),
+               "sphere8_open_small": (-4.0, 9.0, -4.0, 4.0, -4.0, 4.0)}
 # the time scheme of a case (Euler unless named here)
 BACKWARD = ("sphere8_backward", "settling24_backward")
 
@@ -262,7 +273,13 @@ def base_case(name):
     shutil.rmtree(base, ignore_errors=True)
     dt = 1.0 / n ** 2                       # lambda 1 (nu = 1)
     steps = int(round(t_end / dt))
-    if kind == "body":
+    if name in OPEN_DOMAIN:
+        frd = open_domain_writer()
+        frd.write_case(base, ar, 0.0, 0.02, n, 1.0, domain=OPEN_DOMAIN[name],
+                       max_viscous_number=1e6)
+        dt = 0.02 / n ** 2                  # lambda 1 (nu = 50)
+        steps = int(round(t_end * 0.02 / dt))
+    elif kind == "body":
         # this campaign runs past the module's viscous-number limit on purpose
         caseWriter.write_case(base, ar, "x", BOX.get(name, SCANNED_PERIOD), n, dt, steps * dt,
                               max_viscous_number=1e6,
@@ -273,11 +290,22 @@ def base_case(name):
     set_entry(os.path.join(base, "system", "controlDict"), "endTime", f"{steps * dt:.12g}")
     set_entry(os.path.join(base, "system", "controlDict"), "writeControl", "timeStep")
     set_entry(os.path.join(base, "system", "controlDict"), "writeInterval", str(steps))
-    for cmd in (["blockMesh"], ["pimpleFoam"]):
+    for cmd in ([["pimpleFoam"]] if name in OPEN_DOMAIN else [["blockMesh"], ["pimpleFoam"]]):
         if run_logged(cmd, base, f"log.{cmd[0]}") != 0:
             sys.exit(f"viscousNumber: {cmd[0]} failed in {base}")
     open(os.path.join(base, "done"), "w").close()
     return base
+
+
+def open_domain_writer():
+    """validation/finiteReynoldsDrag's case writer (a module of the same name as
+    validation/stokesDrag's)."""
+    import importlib.util
+    path = Path(__file__).resolve().parents[1] / "finiteReynoldsDrag" / "caseWriter.py"
+    spec = importlib.util.spec_from_file_location("finiteReynoldsDragCaseWriter", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
 
 
 def signal(case, kind):
@@ -354,7 +382,7 @@ def run_test(name, setting, lam):
         shutil.copytree(base_case(name), case)
         t0 = float(max((d for d in os.listdir(case) if re.fullmatch(r"[0-9.eE+-]+", d)),
                        key=float))
-        dt = lam / n ** 2
+        dt = lam / n ** 2 * (0.02 if name in OPEN_DOMAIN else 1.0)   # nu 50 or 1
         control = os.path.join(case, "system", "controlDict")
         set_entry(control, "deltaT", f"{dt:.12g}")
         set_entry(control, "endTime", f"{t0 + STEPS * dt:.12g}")

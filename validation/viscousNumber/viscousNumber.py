@@ -688,7 +688,7 @@ def do_plot(_args):
 
 
 FIXED_CASES = ["sphere6", "sphere8", "sphere12", "sphere16", "prolate8", "oblate8",
-               "sphere8_box6", "sphere8_box8"]
+               "sphere8_box6", "sphere8_box8", "sphere8_open", "sphere8_open_small"]
 FREE_CASES = ["settling24", "settling36"]
 
 

@@ -456,11 +456,10 @@ Foam::scalar Foam::viscousNumberLimit::check
       : string
         (
             "the limit measured (validation/viscousNumber) for a "
-          + word
-            (
+          + (
                 freeBody
               ? "free body of density ratio " + shortNumber(ratio)
-              : "fixed or prescribed body"
+              : std::string("fixed or prescribed body")
             )
           + " at " + shortNumber(bodyCells[worst])
           + " cells per equal-volume diameter"

@@ -18,6 +18,9 @@ without an immersed body:
   prolate8, oblate8: the same for spheroids of aspect ratio 2 and 0.5 (flow
      along the symmetry axis), 8 cells per equal-volume diameter D_eq;
   sphere8_box6, sphere8_box8: sphere8 in periodic boxes of 6 and 8 D (BOX);
+  settling_periodic4, settling_periodic8: a free sphere (density ratio 2) at
+     6 cells/D settling from rest in triply periodic boxes of 4 and 8 D
+     (validation/hinderedSettling's single-sphere case, PERIODIC_SETTLING);
   sphere8_open, sphere8_open_small: sphere8 in the inlet-outlet domain of
      validation/finiteReynoldsDrag at Re 0.02 (nu = 50), sides 12 and 4 D
      from the sphere (OPEN_DOMAIN);
@@ -140,6 +143,9 @@ CASES = {
     **{name: ("settling", 24, None, FREE_SETTINGS, None) for name in
        ("settling24_ratio0p3", "settling24_ratio0p5", "settling24_ratio2",
         "settling24_ratio8")},
+    # a free sphere in triply periodic boxes (PERIODIC_SETTLING)
+    "settling_periodic4": ("settling", 6, None, ["pred_c2"], None),
+    "settling_periodic8": ("settling", 6, None, ["pred_c2"], None),
     # the same with backward steps (the README's advice for moving bodies)
     "sphere8_backward": ("body", 8, 1.6, ["pred_c2", "pred_c3"], 1.0),
     "settling24_backward": ("settling", 24, None, ["pred_c2", "pred_c3"], None),
@@ -164,6 +170,12 @@ BOX = {"sphere8_box6": 6.0, "sphere8_box8": 8.0}
 # (x0 x1 y0 y1 z0 z1) in D_eq
 OPEN_DOMAIN = {"sphere8_open": (-12.0, 24.0, -12.0, 12.0, -12.0, 12.0),
                "sphere8_open_small": (-4.0, 9.0, -4.0, 4.0, -4.0, 4.0)}
+# free spheres settling from rest in triply periodic boxes: the single sphere of
+# validation/hinderedSettling (density ratio 2, meanFlow zeroFlux, the periodicSuspension
+# tutorial's numerics, uniform cells) in boxes of PERIODIC_SETTLING[name] D, steps of
+# PERIODIC_DT D/V_g, nu set for lambda
+PERIODIC_SETTLING = {"settling_periodic4": 4.0, "settling_periodic8": 8.0}
+PERIODIC_DT = 0.05
 # the time scheme of a case (Euler unless named here)
 BACKWARD = ("sphere8_backward", "settling24_backward")
 
@@ -297,15 +309,33 @@ def base_case(name):
     return base
 
 
-def open_domain_writer():
-    """validation/finiteReynoldsDrag's case writer (a module of the same name as
-    validation/stokesDrag's)."""
+def validation_module(folder, file, name):
+    """The module file of validation/folder, loaded as name (several validations have a
+    caseWriter.py)."""
     import importlib.util
-    path = Path(__file__).resolve().parents[1] / "finiteReynoldsDrag" / "caseWriter.py"
-    spec = importlib.util.spec_from_file_location("finiteReynoldsDragCaseWriter", path)
+    path = Path(__file__).resolve().parents[1] / folder / file
+    spec = importlib.util.spec_from_file_location(name, path)
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
+
+
+def open_domain_writer():
+    """validation/finiteReynoldsDrag's case writer."""
+    return validation_module("finiteReynoldsDrag", "caseWriter.py", "finiteReynoldsDragCaseWriter")
+
+
+def periodic_settling_case(case, n, box, lam):
+    """A free sphere (D = 1) at the centre of a triply periodic box of side box on
+    (n box)^3 cells, from rest, SETTLING_STEPS steps of PERIODIC_DT, nu set for
+    nu dt/h^2 = lam (validation/hinderedSettling's single-sphere case)."""
+    hs = validation_module("hinderedSettling", "hinderedSettling.py", "hinderedSettling")
+    end = SETTLING_STEPS * PERIODIC_DT
+    hs.write_case(case, 0.0, n, box, 1, end, write_interval=end,
+                  single=dict(n=int(round(n * box)), nu=lam / n ** 2 / PERIODIC_DT, g=1.0,
+                              dt=PERIODIC_DT))
+    substitute(os.path.join(case, "constant", "immersedBodiesProperties"), "fluidDensity",
+               "maxViscousNumber 1e6;\n\nfluidDensity")
 
 
 def signal(case, kind):
@@ -374,7 +404,10 @@ def run_test(name, setting, lam):
     steps = STEPS
     if kind == "settling":
         steps = SETTLING_STEPS
-        settling_case(case, n, lam, SETTLING_DENSITY_RATIO.get(name))
+        if name in PERIODIC_SETTLING:
+            periodic_settling_case(case, n, PERIODIC_SETTLING[name], lam)
+        else:
+            settling_case(case, n, lam, SETTLING_DENSITY_RATIO.get(name))
         if name in BACKWARD:
             substitute(os.path.join(case, "system", "fvSchemes"), "default         Euler;",
                        "default         backward;")

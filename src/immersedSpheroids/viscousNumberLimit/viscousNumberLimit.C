@@ -14,6 +14,7 @@ License
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <utility>
 
 // * * * * * * * * * * * * * * * Local Constants * * * * * * * * * * * * * * //
 
@@ -97,6 +98,40 @@ constexpr measuredSetting measuredLimits[] =
     // VISCOUS_NUMBER_LIMITS_END
 };
 
+//- The entries nearest to value by key among those keep accepts: the one
+//  with the largest key up to value and the one with the smallest key above
+//  it (nullptr where there is none)
+template<class Keep, class Key>
+std::pair<const measuredSetting*, const measuredSetting*> bracket
+(
+    const Keep& keep,
+    const Key& key,
+    const scalar value
+)
+{
+    const measuredSetting* below = nullptr;
+    const measuredSetting* above = nullptr;
+    for (const measuredSetting& m : measuredLimits)
+    {
+        if (!keep(m))
+        {
+            continue;
+        }
+        if (key(m) <= value)
+        {
+            if (!below || key(m) > key(*below))
+            {
+                below = &m;
+            }
+        }
+        else if (!above || key(m) < key(*above))
+        {
+            above = &m;
+        }
+    }
+    return {below, above};
+}
+
 //- The entry with the motion, predictor, pressure equation (the standard
 //  one's where the consistent one was not measured) and outer correctors
 //  (those of one outer corrector where none was measured), and the most
@@ -115,35 +150,22 @@ const measuredSetting* tableEntry
     {
         for (const label mode : {outer, label(0)})
         {
-            const measuredSetting* below = nullptr;
-            const measuredSetting* above = nullptr;
-            for (const measuredSetting& m : measuredLimits)
+            const auto nearest = bracket
+            (
+                [&](const measuredSetting& m)
+                {
+                    return
+                        m.freeBody == freeBody
+                     && m.momentumPredictor == momentumPredictor
+                     && m.consistent == simplec
+                     && m.outer == mode;
+                },
+                [](const measuredSetting& m) { return scalar(m.nCorrectors); },
+                nCorrectors
+            );
+            if (nearest.first || nearest.second)
             {
-                if
-                (
-                    m.freeBody != freeBody
-                 || m.momentumPredictor != momentumPredictor
-                 || m.consistent != simplec
-                 || m.outer != mode
-                )
-                {
-                    continue;
-                }
-                if (m.nCorrectors <= nCorrectors)
-                {
-                    if (!below || m.nCorrectors > below->nCorrectors)
-                    {
-                        below = &m;
-                    }
-                }
-                else if (!above || m.nCorrectors < above->nCorrectors)
-                {
-                    above = &m;
-                }
-            }
-            if (below || above)
-            {
-                return below ? below : above;
+                return nearest.first ? nearest.first : nearest.second;
             }
         }
     }
@@ -155,38 +177,25 @@ const measuredSetting* tableEntry
 //  the nearest measured ratio outside the measured range)
 scalar freeLimitAt(const measuredSetting& setting, const scalar densityRatio)
 {
-    const measuredSetting* below = nullptr;
-    const measuredSetting* above = nullptr;
-    for (const measuredSetting& m : measuredLimits)
+    const auto nearest = bracket
+    (
+        [&](const measuredSetting& m)
+        {
+            return
+                m.freeBody
+             && m.momentumPredictor == setting.momentumPredictor
+             && m.consistent == setting.consistent
+             && m.outer == setting.outer
+             && m.nCorrectors == setting.nCorrectors;
+        },
+        [](const measuredSetting& m) { return m.densityRatio; },
+        densityRatio
+    );
+    if (nearest.first && nearest.second)
     {
-        if
-        (
-            !m.freeBody
-         || m.momentumPredictor != setting.momentumPredictor
-         || m.consistent != setting.consistent
-         || m.outer != setting.outer
-         || m.nCorrectors != setting.nCorrectors
-        )
-        {
-            continue;
-        }
-        if (m.densityRatio <= densityRatio)
-        {
-            if (!below || m.densityRatio > below->densityRatio)
-            {
-                below = &m;
-            }
-        }
-        else if (!above || m.densityRatio < above->densityRatio)
-        {
-            above = &m;
-        }
+        return Foam::min(nearest.first->limit, nearest.second->limit);
     }
-    if (below && above)
-    {
-        return Foam::min(below->limit, above->limit);
-    }
-    return below ? below->limit : above->limit;
+    return nearest.first ? nearest.first->limit : nearest.second->limit;
 }
 
 //- v to 4 significant digits, for a message

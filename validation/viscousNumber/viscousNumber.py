@@ -18,6 +18,8 @@ without an immersed body:
   prolate8, oblate8: the same for spheroids of aspect ratio 2 and 0.5 (flow
      along the symmetry axis), 8 cells per equal-volume diameter D_eq;
   sphere8_box6, sphere8_box8: sphere8 in periodic boxes of 6 and 8 D (BOX);
+  moving8_box4, moving8_box8: the sphere of sphere8 moved at 0.02 through fluid
+     at rest in periodic boxes of 4 and 8 D, no mean flow held (MOVING);
   settling_periodic4, settling_periodic8: a free sphere (density ratio 2) at
      6 cells/D settling from rest in triply periodic boxes of 4 and 8 D
      (validation/hinderedSettling's single-sphere case, PERIODIC_SETTLING);
@@ -132,6 +134,9 @@ CASES = {
     # sphere8 in domains with an inlet and an outlet (OPEN_DOMAIN)
     "sphere8_open": ("body", 8, 1.6, ["pred_c2"], 1.0),
     "sphere8_open_small": ("body", 8, 1.6, ["pred_c2"], 1.0),
+    # a sphere moved at constant velocity through fluid at rest (MOVING)
+    "moving8_box4": ("body", 8, 1.6, ["pred_c2"], 1.0),
+    "moving8_box8": ("body", 8, 1.6, ["pred_c2"], 1.0),
     # sphere8 in larger boxes (BOX)
     "sphere8_box6": ("body", 8, 1.6, ["pred_c2", "pred_c3", "pred_c2_consistent"], 1.0),
     "sphere8_box8": ("body", 8, 1.6, ["pred_c2", "pred_c3", "pred_c2_consistent"], 1.0),
@@ -164,7 +169,10 @@ SETTLING_DENSITY_RATIO = {"settling24_ratio0p3": 0.3, "settling24_ratio0p5": 0.5
 # viscousNumberLimit.C counts a body at c cells per D_eq in a longer period L as one at
 # c L/SCANNED_PERIOD (period_cells)
 SCANNED_PERIOD = 4.0
-BOX = {"sphere8_box6": 6.0, "sphere8_box8": 8.0}
+BOX = {"sphere8_box6": 6.0, "sphere8_box8": 8.0, "moving8_box4": 4.0, "moving8_box8": 8.0}
+# prescribed-motion cases: the sphere moves at (-0.02, 0, 0) through fluid at rest in the
+# periodic box, no mean flow held (sphere8's relative flow without meanVelocityForce)
+MOVING = ("moving8_box4", "moving8_box8")
 # fixed-body cases in the domain of validation/finiteReynoldsDrag (a uniform stream from an
 # inlet to an outlet, symmetry sides, the mesh refined towards the body) at Re 0.02:
 # (x0 x1 y0 y1 z0 z1) in D_eq
@@ -293,8 +301,10 @@ def base_case(name):
         steps = int(round(t_end * 0.02 / dt))
     elif kind == "body":
         # this campaign runs past the module's viscous-number limit on purpose
+        moving = (dict(ubar=(0.0, 0.0, 0.0), body_velocity=(-0.02, 0.0, 0.0))
+                  if name in MOVING else {})
         caseWriter.write_case(base, ar, "x", BOX.get(name, SCANNED_PERIOD), n, dt, steps * dt,
-                              max_viscous_number=1e6,
+                              max_viscous_number=1e6, **moving,
                               ddt="backward" if name in BACKWARD else "Euler")
     else:
         write_cavity(base, n)
@@ -721,7 +731,8 @@ def do_plot(_args):
 
 
 FIXED_CASES = ["sphere6", "sphere8", "sphere12", "sphere16", "prolate8", "oblate8",
-               "sphere8_box6", "sphere8_box8", "sphere8_open", "sphere8_open_small"]
+               "sphere8_box6", "sphere8_box8", "sphere8_open", "sphere8_open_small",
+               "moving8_box4", "moving8_box8"]
 FREE_CASES = ["settling24", "settling36"]
 
 

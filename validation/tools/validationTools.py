@@ -96,18 +96,25 @@ def read_csv(path, missing_ok=True):
 def write_csv(path, rows, fields=None, ignore_extra=False):
     """Write rows (dicts) to the CSV file path, creating its folder. fields: the columns in
     order (default: the keys of the first row); ignore_extra: drop keys of a row that are not
-    columns (else ValueError)."""
+    columns (else ValueError). The file is written beside path and renamed onto it, so that a
+    reader never sees it half written."""
     rows = list(rows)
     if fields is None:
         fields = list(rows[0])
     folder = os.path.dirname(str(path))
     if folder:
         os.makedirs(folder, exist_ok=True)
-    with open(path, "w", newline="") as f:
-        wr = csv.DictWriter(f, fieldnames=fields,
-                            extrasaction="ignore" if ignore_extra else "raise")
-        wr.writeheader()
-        wr.writerows(rows)
+    partial = f"{path}.{os.getpid()}.partial"
+    try:
+        with open(partial, "w", newline="") as f:
+            wr = csv.DictWriter(f, fieldnames=fields,
+                                extrasaction="ignore" if ignore_extra else "raise")
+            wr.writeheader()
+            wr.writerows(rows)
+        os.replace(partial, path)
+    finally:
+        if os.path.exists(partial):
+            os.remove(partial)
 
 
 # ---------------------------------------------------------------------------

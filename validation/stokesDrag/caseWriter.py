@@ -42,8 +42,9 @@ def write_case(case, ar, flow, box, cpd, dt, end_time, u=0.02, nu=1.0,
                centre=(0.0, 0.0, 0.0), max_viscous_number=None):
     """Write case/ (system, constant, 0) for a body of aspect ratio ar with its
     symmetry (body x) axis along world x, in a triply periodic box of side
-    box (D_eq units), flow direction flow = 'x' (axial) or 'y' (transverse),
-    cpd cells per D_eq in the fine region, Euler steps dt up to end_time.
+    box (D_eq units; or its sides along x, y and z), flow direction flow =
+    'x' (axial) or 'y' (transverse), cpd cells per D_eq in the fine region,
+    Euler steps dt up to end_time.
     ubar: the superficial velocity held (default u along the flow directions);
     body_velocity: a prescribed constant velocity of the body (default fixed),
     which starts at centre; max_viscous_number: the module's limit of nu dt/h^2 in the body's
@@ -51,11 +52,12 @@ def write_case(case, ar, flow, box, cpd, dt, end_time, u=0.02, nu=1.0,
     h = 1.0 / cpd
     axes = semi_axes(ar)
     fine = fine_half_widths(axes, h, margin)
-    half = 0.5 * box
-    if max(fine) >= half:
+    sides = (box, box, box) if isinstance(box, (int, float)) else tuple(box)
+    halves = [0.5 * side for side in sides]
+    if any(f >= half for f, half in zip(fine, halves)):
         sys.exit(f"caseWriter: the fine region {fine} does not fit in the box {box}")
     refined_box_mesh(case, [
-        "--box", *map(str, (-half, half, -half, half, -half, half)),
+        "--box", *map(str, (x for half in halves for x in (-half, half))),
         "--fine", *(f"{s:.12g}" for f in fine for s in (-f, f)),
         "--h", f"{h:.12g}", "--growth", str(growth), "--max-ratio", str(max_ratio),
         "--periodic", "x", "--periodic", "y", "--periodic", "z"])

@@ -18,6 +18,8 @@ without an immersed body:
   prolate8, oblate8: the same for spheroids of aspect ratio 2 and 0.5 (flow
      along the symmetry axis), 8 cells per equal-volume diameter D_eq;
   sphere8_box6, sphere8_box8: sphere8 in periodic boxes of 6 and 8 D (BOX);
+  sphere8_box4x4x8, sphere8_box8x4x4: sphere8 in periodic boxes 8 D long
+     across the flow (z) and along it (x), 4 D in the other directions;
   moving8_box4, moving8_box8: the sphere of sphere8 moved at 0.02 through fluid
      at rest in periodic boxes of 4 and 8 D, no mean flow held (MOVING);
   settling_periodic4, settling_periodic8: a free sphere (density ratio 2) at
@@ -32,9 +34,13 @@ without an immersed body:
      D_eq) and refined to 36 x 36 x 48 (8.2); lambda is set through nu; each
      test runs SETTLING_STEPS steps from rest (no base), its signal the body's
      vertical velocity;
-  settling24_ratio0p3, _ratio0p5, _ratio2, _ratio8: settling24 at density
-     ratios 0.3, 0.5, 2 and 8 (SETTLING_DENSITY_RATIO), gravity scaled so
-     that the body's net weight per fluid mass is the same;
+  settling24_ratio0p1, _ratio0p3, _ratio0p5, _ratio2, _ratio8: settling24 at
+     density ratios 0.1, 0.3, 0.5, 2 and 8 (SETTLING_DENSITY_RATIO), gravity
+     scaled so that the body's net weight per fluid mass is the same;
+  settling24_cv0, settling24_ratio<r>_cv0: the same without virtual mass
+     (virtualMass 0, VIRTUAL_MASS; the others 0.5); settling24_cv0p25,
+     settling24_cv1, settling24_ratio0p5_cv1, settling24_ratio8_cv1: with C_v
+     0.25 and 1, checks of how the module brackets C_v;
   sphere8_backward, settling24_backward: sphere8 and settling24 with backward
      steps (the other cases use Euler);
   cavity: the lid-driven square cavity (32 x 32 cells, side 1, lid speed 1,
@@ -72,6 +78,7 @@ quick: the check of tests/foam/viscousNumberQuick, in DIR: sphere8 with the
      stopped by the module at QUICK_PERIOD_LAMBDA; exit status 1 otherwise.
 """
 import argparse
+import fcntl
 import json
 import math
 import os
@@ -137,7 +144,9 @@ CASES = {
     # a sphere moved at constant velocity through fluid at rest (MOVING)
     "moving8_box4": ("body", 8, 1.6, ["pred_c2"], 1.0),
     "moving8_box8": ("body", 8, 1.6, ["pred_c2"], 1.0),
-    # sphere8 in larger boxes (BOX)
+    # sphere8 in larger boxes (BOX), and in boxes 8 D long across the flow and along it
+    "sphere8_box4x4x8": ("body", 8, 1.6, ["pred_c2"], 1.0),
+    "sphere8_box8x4x4": ("body", 8, 1.6, ["pred_c2"], 1.0),
     "sphere8_box6": ("body", 8, 1.6, ["pred_c2", "pred_c3", "pred_c2_consistent"], 1.0),
     "sphere8_box8": ("body", 8, 1.6, ["pred_c2", "pred_c3", "pred_c2_consistent"], 1.0),
     "oblate8": ("body", 8, 1.6, ["pred_c2"], 0.5),
@@ -146,8 +155,18 @@ CASES = {
     "settling36": ("settling", 36, None, ["pred_c2", "pred_c3"], None),
     # the same spheroid at other density ratios (SETTLING_DENSITY_RATIO)
     **{name: ("settling", 24, None, FREE_SETTINGS, None) for name in
-       ("settling24_ratio0p3", "settling24_ratio0p5", "settling24_ratio2",
-        "settling24_ratio8")},
+       ("settling24_ratio0p1", "settling24_ratio0p3", "settling24_ratio0p5",
+        "settling24_ratio2", "settling24_ratio8")},
+    # the same spheroid without virtual mass at every density ratio (VIRTUAL_MASS)
+    **{name: ("settling", 24, None, FREE_SETTINGS, None) for name in
+       ("settling24_cv0", "settling24_ratio0p1_cv0", "settling24_ratio0p3_cv0",
+        "settling24_ratio0p5_cv0",
+        "settling24_ratio2_cv0", "settling24_ratio8_cv0")},
+    # and with C_v between and above the table's 0 and 0.5 (checks of the bracketing)
+    **{name: ("settling", 24, None, ["pred_c2", "pred_c3"], None) for name in
+       ("settling24_cv0p25", "settling24_cv1")},
+    **{name: ("settling", 24, None, ["pred_c2"], None) for name in
+       ("settling24_ratio0p5_cv1", "settling24_ratio8_cv1")},
     # a free sphere in triply periodic boxes (PERIODIC_SETTLING)
     "settling_periodic4": ("settling", 6, None, ["pred_c2"], None),
     "settling_periodic8": ("settling", 6, None, ["pred_c2"], None),
@@ -163,13 +182,24 @@ CASES = {
 # body lighter than the fluid starts as far below the lid as the base case's starts above the
 # floor, so that every body moves as far in its 100 steps
 SETTLING_BASE_RATIO = 1120 / 960
-SETTLING_DENSITY_RATIO = {"settling24_ratio0p3": 0.3, "settling24_ratio0p5": 0.5,
-                          "settling24_ratio2": 2.0, "settling24_ratio8": 8.0}
-# the periodic box's side of a fixed-body case in D_eq (SCANNED_PERIOD unless named here);
-# viscousNumberLimit.C counts a body at c cells per D_eq in a longer period L as one at
-# c L/SCANNED_PERIOD (period_cells)
+SETTLING_DENSITY_RATIO = {f"settling24_ratio{tag}{cv}": ratio
+                          for tag, ratio in (("0p1", 0.1), ("0p3", 0.3), ("0p5", 0.5),
+                                             ("2", 2.0), ("8", 8.0))
+                          for cv in ("", "_cv0", "_cv1")}
+# the virtual-mass coefficient C_v (virtualMass) of a settling case (the base case's, 0.5,
+# unless named here); viscousNumberLimit.C's free entries are those of TABLE_VIRTUAL_MASS, the
+# others check how it brackets C_v
+SETTLING_BASE_VIRTUAL_MASS = 0.5
+TABLE_VIRTUAL_MASS = (0.0, 0.5)
+VIRTUAL_MASS = {name: cv for name in CASES
+                for tag, cv in (("_cv0", 0.0), ("_cv0p25", 0.25), ("_cv1", 1.0))
+                if name.startswith("settling24") and name.endswith(tag)}
+# the periodic box's side of a fixed-body case in D_eq (SCANNED_PERIOD unless named here), or
+# its sides along x (the flow), y and z; viscousNumberLimit.C counts a body at c cells per D_eq
+# in a longest period L above SCANNED_PERIOD as one at c L/SCANNED_PERIOD (period_cells)
 SCANNED_PERIOD = 4.0
-BOX = {"sphere8_box6": 6.0, "sphere8_box8": 8.0, "moving8_box4": 4.0, "moving8_box8": 8.0}
+BOX = {"sphere8_box6": 6.0, "sphere8_box8": 8.0, "moving8_box4": 4.0, "moving8_box8": 8.0,
+       "sphere8_box4x4x8": (4.0, 4.0, 8.0), "sphere8_box8x4x4": (8.0, 4.0, 4.0)}
 # prescribed-motion cases: the sphere moves at (-0.02, 0, 0) through fluid at rest in the
 # periodic box, no mean flow held (sphere8's relative flow without meanVelocityForce)
 MOVING = ("moving8_box4", "moving8_box8")
@@ -381,10 +411,11 @@ def settling_cells_per_diameter(n):
     return 2 * (9 * 6 * 6) ** (1 / 3) / (60 / n)
 
 
-def settling_case(case, n, lam, ratio=None):
+def settling_case(case, n, lam, ratio=None, virtual_mass=None):
     """The settling spheroid of tests/foam/settlingSphereCase in case/, on n x n x 4n/3
     cells, nu set for nu dt/h^2 = lam, SETTLING_STEPS steps of 4 ms from rest; with ratio,
-    the body's density is ratio times the fluid's (SETTLING_DENSITY_RATIO)."""
+    the body's density is ratio times the fluid's (SETTLING_DENSITY_RATIO); with
+    virtual_mass, that virtualMass (VIRTUAL_MASS)."""
     shutil.copytree(SETTLING_CASE, case)
     shutil.copytree(os.path.join(case, "0.orig"), os.path.join(case, "0"))
     substitute(os.path.join(case, "system", "blockMeshDict"), "(24 24 32)",
@@ -403,6 +434,8 @@ def settling_case(case, n, lam, ratio=None):
         substitute(os.path.join(case, "constant", "g"), "(0 0 -9.81)", f"(0 0 -{g:.12g})")
         if ratio < 1:
             substitute(properties, "(0.0285 0.031 0.05)", "(0.0285 0.031 0.03)")
+    if virtual_mass is not None:
+        substitute(properties, "virtualMass     0.5;", f"virtualMass     {virtual_mass:g};")
 
 
 def run_test(name, setting, lam):
@@ -417,7 +450,8 @@ def run_test(name, setting, lam):
         if name in PERIODIC_SETTLING:
             periodic_settling_case(case, n, PERIODIC_SETTLING[name], lam)
         else:
-            settling_case(case, n, lam, SETTLING_DENSITY_RATIO.get(name))
+            settling_case(case, n, lam, SETTLING_DENSITY_RATIO.get(name),
+                          VIRTUAL_MASS.get(name))
         if name in BACKWARD:
             substitute(os.path.join(case, "system", "fvSchemes"), "default         Euler;",
                        "default         backward;")
@@ -537,11 +571,14 @@ def do_run(args):
         if done and not args.force:
             return done[-1]["status"] == "stable"
         row = run_test(name, setting, lam)
-        # merged with the file as it is now: scans of other cases may run beside this one
-        rows = [r for r in read_csv(RUNS_CSV)
-                if not (r["case"] == name and r["setting"] == setting
-                        and abs(float(r["lam"]) / lam - 1) < 1e-9)] + [row]
-        write_csv(RUNS_CSV, rows, FIELDS)
+        # merged with the file as it is now, under a lock: scans of other cases may run
+        # beside this one
+        with open(RUNS_CSV + ".lock", "w") as lock:
+            fcntl.flock(lock, fcntl.LOCK_EX)
+            rows = [r for r in read_csv(RUNS_CSV)
+                    if not (r["case"] == name and r["setting"] == setting
+                            and abs(float(r["lam"]) / lam - 1) < 1e-9)] + [row]
+            write_csv(RUNS_CSV, rows, FIELDS)
         print(f"{name} {setting} lambda {lam:g}: {row['status']} (growth "
               f"{row['growth']}/step)", flush=True)
         return row["status"] == "stable"
@@ -606,26 +643,27 @@ def do_plot(_args):
         if first is not None:
             metrics[f"first_unstable_{name}_{setting}"] = first
     mod = module_limits(lim)
-    mlines = ["| body | density ratio | momentumPredictor | consistent | nCorrectors | "
-              f"outer correctors | limit at {REFERENCE_CPD} cells/D_eq | exponent p | C++ entry |",
-              "|---|---|---|---|---|---|---|---|---|"]
-    for (free, setting, ratio), (value, p) in sorted(mod.items(), key=lambda kv: kv[0]):
+    mlines = ["| body | density ratio | virtual mass C_v | momentumPredictor | consistent | "
+              f"nCorrectors | outer correctors | limit at {REFERENCE_CPD} cells/D_eq | "
+              "exponent p | C++ entry |", "|---|---|---|---|---|---|---|---|---|---|"]
+    for (free, setting, ratio, cv), (value, p) in sorted(mod.items(), key=lambda kv: kv[0]):
         predictor, correctors, outer, relax = SETTINGS[setting]
         # viscousNumberLimit::outerMode: single, unrelaxed, relaxed
         mode = 0 if outer == 1 else (2 if relax else 1)
         v, p = floor3(value), round(p, 2)
         if free:
-            metrics[f"module_limit_free_{setting}_ratio{ratio:g}".replace(".", "p")] = v
+            metrics[f"module_limit_free_{setting}_ratio{ratio:g}_cv{cv:g}".replace(".", "p")] = v
         else:
             metrics[f"module_limit_fixed_{setting}"] = v
         consistent = setting.endswith("_consistent")
         mlines.append(f"| {'free' if free else 'fixed or prescribed'} | "
-                      f"{f'{ratio:g}' if free else 'any'} | {predictor} | "
+                      f"{f'{ratio:g}' if free else 'any'} | {f'{cv:g}' if free else 'any'} | "
+                      f"{predictor} | "
                       f"{'yes' if consistent else 'no'} | "
                       f"{correctors} | {('1', 'several', 'several, relaxed')[mode]} | {v:g} | "
                       f"{p:g} | {{{str(free).lower()}, {str(predictor == 'yes').lower()}, "
                       f"{str(consistent).lower()}, {mode}, {correctors}, {v:g}, {p:g}, "
-                      f"{ratio:g}}} |")
+                      f"{ratio:g}, {cv:g}}} |")
     hosts = sorted({r["host"] for r in rows})
     commits = sorted({r["commit"] for r in rows})
     os.makedirs(RESULTS, exist_ok=True)
@@ -635,7 +673,10 @@ def do_plot(_args):
                 f"a body at c cells per D_eq has the limit lambda ({REFERENCE_CPD}/c)^p, "
                 "lambda rounded down to 3 digits; a free body of density ratio r has the "
                 "smaller of the limits of the two measured ratios that bracket r (the nearest "
-                "measured ratio's outside their range), at most the fixed body's.\n\n"
+                "measured ratio's outside their range), and with virtualMass C_v the smaller of "
+                "those of the two measured C_v that bracket C_v (the nearest's outside), at most "
+                "the fixed body's; 0: no stable lambda measured (the module refuses the "
+                "body).\n\n"
                 + "\n".join(mlines) + "\n")
     with open(os.path.join(RESULTS, "table.md"), "w") as f:
         f.write("Largest stable viscous number nu dt/h^2 (Euler; lambdas scanned: "
@@ -681,8 +722,8 @@ def do_plot(_args):
                for n in FREE_CASES if (n, setting) in lim]
         lam = [lim[(n, setting)][0] for n in FREE_CASES if (n, setting) in lim]
         ax.plot(cpd, lam, "s--", color=colour, mfc="none", label=f"free spheroid, {setting}")
-        if (False, setting, 0.0) in mod:
-            value, p = mod[(False, setting, 0.0)]
+        if (False, setting, 0.0, 0.0) in mod:
+            value, p = mod[(False, setting, 0.0, 0.0)]
             c = np.array([6.0, REFERENCE_CPD * 2])
             ax.plot(c, floor3(value) * (REFERENCE_CPD / c) ** p, ":", color=colour,
                     label=f"module's limit, fixed, {setting}")
@@ -696,7 +737,7 @@ def do_plot(_args):
                if lim.get((n, setting), (None, None))[0] is not None]
         if pts:
             ax.plot(*zip(*pts), "D", color=colour, mfc="none",
-                    label=f"sphere8 in boxes of {', '.join(f'{BOX[n]:g}' for n in BOX)} D "
+                    label=f"sphere8 in boxes of {', '.join(box_label(BOX[n]) for n in BOX)} D "
                           f"at 8 L/{SCANNED_PERIOD:g}, {setting}")
     if ax.lines:
         ax.set_xscale("log")
@@ -707,18 +748,22 @@ def do_plot(_args):
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7)
     ax = axes[3]
-    ratio_cases = sorted(["settling24"] + list(SETTLING_DENSITY_RATIO), key=settling_ratio)
+    ratio_cases = sorted(["settling24", "settling24_cv0"] + list(SETTLING_DENSITY_RATIO),
+                         key=settling_ratio)
     for i, setting in enumerate(FREE_SETTINGS):
-        pts = [(settling_ratio(n), lim[(n, setting)][0]) for n in ratio_cases
-               if lim.get((n, setting), (None, None))[0] is not None]
-        if pts:
-            ax.plot(*zip(*pts), "s-", color=f"C{i}", label=setting)
+        for cv, style in zip(TABLE_VIRTUAL_MASS, ("o--", "s-")):
+            pts = [(settling_ratio(n), lim[(n, setting)][0]) for n in ratio_cases
+                   if settling_virtual_mass(n) == cv
+                   and lim.get((n, setting), (None, None))[0] is not None]
+            if pts:
+                ax.plot(*zip(*pts), style, color=f"C{i}", mfc="none" if cv == 0 else None,
+                        label=f"{setting}, C_v {cv:g}")
     if ax.lines:
         ax.set_xscale("log")
         ax.set_yscale("log")
     ax.set_xlabel(r"density ratio $\rho_p/\rho_f$")
     ax.set_ylabel(r"largest stable $\nu\,\Delta t/h^2$")
-    ax.set_title("free spheroid (5.5 cells per D_eq): limit against density ratio")
+    ax.set_title("free spheroid, 5.5 cells per D_eq: limit against rho_p/rho_f")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7)
     fig.tight_layout()
@@ -732,7 +777,7 @@ def do_plot(_args):
 
 FIXED_CASES = ["sphere6", "sphere8", "sphere12", "sphere16", "prolate8", "oblate8",
                "sphere8_box6", "sphere8_box8", "sphere8_open", "sphere8_open_small",
-               "moving8_box4", "moving8_box8"]
+               "moving8_box4", "moving8_box8", "sphere8_box4x4x8", "sphere8_box8x4x4"]
 FREE_CASES = ["settling24", "settling36"]
 
 
@@ -742,12 +787,28 @@ REFERENCE_CPD = 16
 def period_cells(name):
     """The resolution a fixed-body case counts as in viscousNumberLimit.C: its cells per D_eq
     times its box's side over SCANNED_PERIOD, where that is larger than one."""
-    return CASES[name][1] * max(1.0, BOX.get(name, SCANNED_PERIOD) / SCANNED_PERIOD)
+    return CASES[name][1] * max(1.0, longest_period(BOX.get(name, SCANNED_PERIOD))
+                                / SCANNED_PERIOD)
+
+
+def longest_period(box):
+    """The longest side of a BOX entry."""
+    return box if isinstance(box, float) else max(box)
+
+
+def box_label(box):
+    """A BOX entry as text: 8 or 4x4x8."""
+    return f"{box:g}" if isinstance(box, float) else "x".join(f"{s:g}" for s in box)
 
 
 def settling_ratio(name):
     """The density ratio rho_p/rho_f of settling case name."""
     return SETTLING_DENSITY_RATIO.get(name, SETTLING_BASE_RATIO)
+
+
+def settling_virtual_mass(name):
+    """The virtual-mass coefficient C_v of settling case name."""
+    return VIRTUAL_MASS.get(name, SETTLING_BASE_VIRTUAL_MASS)
 
 
 def module_limits(lim):
@@ -772,17 +833,25 @@ def module_limits(lim):
         vals = [lim[(c, setting)][0] * (period_cells(c) / REFERENCE_CPD) ** p
                 for c in FIXED_CASES if (c, setting) in lim and lim[(c, setting)][0]]
         if vals:
-            out[(False, setting, 0.0)] = (min(vals), p)
-        for c in FREE_CASES + list(SETTLING_DENSITY_RATIO):
-            if (c, setting) in lim and lim[(c, setting)][0]:
-                key = (True, setting, floor3(settling_ratio(c)))
-                value = lim[(c, setting)][0]
-                out[key] = (min(value, out.get(key, (value,))[0]), 0.0)
+            out[(False, setting, 0.0, 0.0)] = (min(vals), p)
+        for c in FREE_CASES + list(SETTLING_DENSITY_RATIO) + list(VIRTUAL_MASS):
+            cv = settling_virtual_mass(c)
+            if (c, setting) not in lim or cv not in TABLE_VIRTUAL_MASS:
+                continue
+            stable, first = lim[(c, setting)]
+            if stable is None and first is None:
+                continue
+            # no stable lambda on the grid: the limit is 0 (the module refuses the body)
+            value = stable or 0.0
+            key = (True, setting, floor3(settling_ratio(c)), cv)
+            out[key] = (min(value, out.get(key, (value,))[0]), 0.0)
     return out
 
 
 def floor3(x):
     """x rounded down to 3 significant digits."""
+    if x <= 0:
+        return 0.0
     unit = 10 ** (math.floor(math.log10(x)) - 2)
     return math.floor(x / unit + 1e-9) * unit
 

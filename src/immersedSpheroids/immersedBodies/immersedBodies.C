@@ -411,7 +411,7 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
         new viscousNumberLimit
         (
             properties_, mesh_, UName_, film.viscosity()/fluidDensity_,
-            fluidDensity_,
+            fluidDensity_, virtualMass,
             max(domain_.period(0), max(domain_.period(1), domain_.period(2)))
         )
     );

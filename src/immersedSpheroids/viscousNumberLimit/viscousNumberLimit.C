@@ -28,8 +28,8 @@ using Foam::scalar;
 //  (results/moduleLimits.md, which derives them from the measured scans):
 //  {free body, momentum predictor, consistent (SIMPLEC), outer correctors
 //  (outerMode), pressure correctors, limit at 16 cells per equal-volume
-//  diameter, exponent p, density ratio rho_p/rho_f of a free body's scan
-//  (0 for fixed bodies)}
+//  diameter, exponent p, density ratio rho_p/rho_f and virtual-mass
+//  coefficient C_v of a free body's scan (0 for fixed bodies)}
 struct measuredSetting
 {
     bool freeBody;
@@ -43,6 +43,8 @@ struct measuredSetting
     scalar exponent;
     //- The free body's density ratio rho_p/rho_f (0: any)
     scalar densityRatio;
+    //- The free body's virtual-mass coefficient C_v (0 for fixed bodies)
+    scalar virtualMass;
 };
 
 //- The resolution the table's limits are given at (cells per equal-volume
@@ -58,43 +60,78 @@ constexpr measuredSetting measuredLimits[] =
 {
     // VISCOUS_NUMBER_LIMITS_BEGIN (checked against moduleLimits.md by
     // tests/foam/viscousNumberQuick)
-    {false, false, false, 0, 1, 843, 1.28, 0},
-    {false, false, false, 0, 2, 843, 1.28, 0},
-    {false, true, false, 0, 1, 0.0865, 1.28, 0},
-    {false, true, false, 1, 1, 0.0727, 1.28, 0},
-    {false, true, false, 2, 1, 0.346, 1.28, 0},
-    {false, true, false, 0, 2, 1.99, 1.25, 0},
-    {false, true, true, 0, 2, 4.41, 0.26, 0},
-    {false, true, false, 1, 2, 1.95, 1.28, 0},
-    {false, true, false, 2, 2, 5.53, 1.28, 0},
-    {false, true, false, 0, 3, 22.1, 1.28, 0},
-    {false, true, false, 1, 3, 22.1, 1.28, 0},
-    {false, true, false, 0, 4, 74.5, 1.28, 0},
-    {true, false, false, 0, 2, 1.68, 0, 0.3},
-    {true, false, false, 0, 2, 1.68, 0, 0.5},
-    {true, false, false, 0, 2, 2.37, 0, 1.16},
-    {true, false, false, 0, 2, 2.82, 0, 2},
-    {true, false, false, 0, 2, 4.75, 0, 8},
-    {true, true, false, 0, 2, 1.68, 0, 0.3},
-    {true, true, false, 0, 2, 1.68, 0, 0.5},
-    {true, true, false, 0, 2, 2, 0, 1.16},
-    {true, true, false, 0, 2, 2.82, 0, 2},
-    {true, true, false, 0, 2, 3.36, 0, 8},
-    {true, true, true, 0, 2, 4, 0, 0.3},
-    {true, true, true, 0, 2, 4, 0, 0.5},
-    {true, true, true, 0, 2, 4, 0, 1.16},
-    {true, true, true, 0, 2, 4, 0, 2},
-    {true, true, true, 0, 2, 4, 0, 8},
-    {true, true, false, 0, 3, 4, 0, 0.3},
-    {true, true, false, 0, 3, 4.75, 0, 0.5},
-    {true, true, false, 0, 3, 4.75, 0, 1.16},
-    {true, true, false, 0, 3, 5.65, 0, 2},
-    {true, true, false, 0, 3, 9.51, 0, 8},
-    {true, true, false, 0, 4, 5.65, 0, 0.3},
-    {true, true, false, 0, 4, 5.65, 0, 0.5},
-    {true, true, false, 0, 4, 6.72, 0, 1.16},
-    {true, true, false, 0, 4, 6.72, 0, 2},
-    {true, true, false, 0, 4, 13.4, 0, 8}
+    {false, false, false, 0, 1, 843, 1.28, 0, 0},
+    {false, false, false, 0, 2, 843, 1.28, 0, 0},
+    {false, true, false, 0, 1, 0.0865, 1.28, 0, 0},
+    {false, true, false, 1, 1, 0.0727, 1.28, 0, 0},
+    {false, true, false, 2, 1, 0.346, 1.28, 0, 0},
+    {false, true, false, 0, 2, 1.99, 1.25, 0, 0},
+    {false, true, true, 0, 2, 4.41, 0.26, 0, 0},
+    {false, true, false, 1, 2, 1.95, 1.28, 0, 0},
+    {false, true, false, 2, 2, 5.53, 1.28, 0, 0},
+    {false, true, false, 0, 3, 22.1, 1.28, 0, 0},
+    {false, true, false, 1, 3, 22.1, 1.28, 0, 0},
+    {false, true, false, 0, 4, 74.5, 1.28, 0, 0},
+    {true, false, false, 0, 2, 1, 0, 0.1, 0},
+    {true, false, false, 0, 2, 1.68, 0, 0.1, 0.5},
+    {true, false, false, 0, 2, 0, 0, 0.3, 0},
+    {true, false, false, 0, 2, 1.68, 0, 0.3, 0.5},
+    {true, false, false, 0, 2, 1.18, 0, 0.5, 0},
+    {true, false, false, 0, 2, 1.68, 0, 0.5, 0.5},
+    {true, false, false, 0, 2, 1.68, 0, 1.16, 0},
+    {true, false, false, 0, 2, 2.37, 0, 1.16, 0.5},
+    {true, false, false, 0, 2, 2, 0, 2, 0},
+    {true, false, false, 0, 2, 2.82, 0, 2, 0.5},
+    {true, false, false, 0, 2, 4.75, 0, 8, 0},
+    {true, false, false, 0, 2, 4.75, 0, 8, 0.5},
+    {true, true, false, 0, 2, 1, 0, 0.1, 0},
+    {true, true, false, 0, 2, 1.41, 0, 0.1, 0.5},
+    {true, true, false, 0, 2, 1, 0, 0.3, 0},
+    {true, true, false, 0, 2, 1.68, 0, 0.3, 0.5},
+    {true, true, false, 0, 2, 1.18, 0, 0.5, 0},
+    {true, true, false, 0, 2, 1.68, 0, 0.5, 0.5},
+    {true, true, false, 0, 2, 1.41, 0, 1.16, 0},
+    {true, true, false, 0, 2, 2, 0, 1.16, 0.5},
+    {true, true, false, 0, 2, 2, 0, 2, 0},
+    {true, true, false, 0, 2, 2.82, 0, 2, 0.5},
+    {true, true, false, 0, 2, 3.36, 0, 8, 0},
+    {true, true, false, 0, 2, 3.36, 0, 8, 0.5},
+    {true, true, true, 0, 2, 4, 0, 0.1, 0},
+    {true, true, true, 0, 2, 4, 0, 0.1, 0.5},
+    {true, true, true, 0, 2, 4, 0, 0.3, 0},
+    {true, true, true, 0, 2, 4, 0, 0.3, 0.5},
+    {true, true, true, 0, 2, 4, 0, 0.5, 0},
+    {true, true, true, 0, 2, 4, 0, 0.5, 0.5},
+    {true, true, true, 0, 2, 4, 0, 1.16, 0},
+    {true, true, true, 0, 2, 4, 0, 1.16, 0.5},
+    {true, true, true, 0, 2, 4, 0, 2, 0},
+    {true, true, true, 0, 2, 4, 0, 2, 0.5},
+    {true, true, true, 0, 2, 4, 0, 8, 0},
+    {true, true, true, 0, 2, 4, 0, 8, 0.5},
+    {true, true, false, 0, 3, 2.37, 0, 0.1, 0},
+    {true, true, false, 0, 3, 3.36, 0, 0.1, 0.5},
+    {true, true, false, 0, 3, 2.82, 0, 0.3, 0},
+    {true, true, false, 0, 3, 4, 0, 0.3, 0.5},
+    {true, true, false, 0, 3, 2.82, 0, 0.5, 0},
+    {true, true, false, 0, 3, 4.75, 0, 0.5, 0.5},
+    {true, true, false, 0, 3, 4, 0, 1.16, 0},
+    {true, true, false, 0, 3, 4.75, 0, 1.16, 0.5},
+    {true, true, false, 0, 3, 4.75, 0, 2, 0},
+    {true, true, false, 0, 3, 5.65, 0, 2, 0.5},
+    {true, true, false, 0, 3, 8, 0, 8, 0},
+    {true, true, false, 0, 3, 9.51, 0, 8, 0.5},
+    {true, true, false, 0, 4, 3.36, 0, 0.1, 0},
+    {true, true, false, 0, 4, 4.75, 0, 0.1, 0.5},
+    {true, true, false, 0, 4, 4, 0, 0.3, 0},
+    {true, true, false, 0, 4, 5.65, 0, 0.3, 0.5},
+    {true, true, false, 0, 4, 4, 0, 0.5, 0},
+    {true, true, false, 0, 4, 5.65, 0, 0.5, 0.5},
+    {true, true, false, 0, 4, 4.75, 0, 1.16, 0},
+    {true, true, false, 0, 4, 6.72, 0, 1.16, 0.5},
+    {true, true, false, 0, 4, 5.65, 0, 2, 0},
+    {true, true, false, 0, 4, 6.72, 0, 2, 0.5},
+    {true, true, false, 0, 4, 13.4, 0, 8, 0},
+    {true, true, false, 0, 4, 13.4, 0, 8, 0.5}
     // VISCOUS_NUMBER_LIMITS_END
 };
 
@@ -172,30 +209,79 @@ const measuredSetting* tableEntry
     return nullptr;
 }
 
-//- The limit of the free entries of setting's settings at densityRatio: the
-//  smaller of the two measured ratios' limits that bracket it (the limit of
-//  the nearest measured ratio outside the measured range)
-scalar freeLimitAt(const measuredSetting& setting, const scalar densityRatio)
+//- Whether m is a free entry with the settings of setting
+bool sameFreeSetting(const measuredSetting& m, const measuredSetting& setting)
 {
-    const auto nearest = bracket
-    (
-        [&](const measuredSetting& m)
-        {
-            return
-                m.freeBody
-             && m.momentumPredictor == setting.momentumPredictor
-             && m.consistent == setting.consistent
-             && m.outer == setting.outer
-             && m.nCorrectors == setting.nCorrectors;
-        },
-        [](const measuredSetting& m) { return m.densityRatio; },
-        densityRatio
-    );
+    return
+        m.freeBody
+     && m.momentumPredictor == setting.momentumPredictor
+     && m.consistent == setting.consistent
+     && m.outer == setting.outer
+     && m.nCorrectors == setting.nCorrectors;
+}
+
+//- The smaller of the limits of the two entries of a bracket (the one entry's
+//  outside the measured range)
+scalar smallerLimit
+(
+    const std::pair<const measuredSetting*, const measuredSetting*>& nearest
+)
+{
     if (nearest.first && nearest.second)
     {
         return Foam::min(nearest.first->limit, nearest.second->limit);
     }
     return nearest.first ? nearest.first->limit : nearest.second->limit;
+}
+
+//- The limit of the free entries of setting's settings at densityRatio and
+//  virtualMass: of the measured C_v that bracket virtualMass (the nearest
+//  outside the measured range), the smaller of their limits, each the
+//  smaller of the limits of the two measured density ratios that bracket
+//  densityRatio (the nearest ratio's outside the measured range)
+scalar freeLimitAt
+(
+    const measuredSetting& setting,
+    const scalar densityRatio,
+    const scalar virtualMass
+)
+{
+    const auto levels = bracket
+    (
+        [&](const measuredSetting& m) { return sameFreeSetting(m, setting); },
+        [](const measuredSetting& m) { return m.virtualMass; },
+        virtualMass
+    );
+    scalar limit = Foam::GREAT;
+    for (const measuredSetting* level : {levels.first, levels.second})
+    {
+        if (level)
+        {
+            const scalar cv = level->virtualMass;
+            limit = Foam::min
+            (
+                limit,
+                smallerLimit
+                (
+                    bracket
+                    (
+                        [&](const measuredSetting& m)
+                        {
+                            return
+                                sameFreeSetting(m, setting)
+                             && m.virtualMass == cv;
+                        },
+                        [](const measuredSetting& m)
+                        {
+                            return m.densityRatio;
+                        },
+                        densityRatio
+                    )
+                )
+            );
+        }
+    }
+    return limit;
 }
 
 //- v to 4 significant digits, for a message
@@ -229,6 +315,7 @@ Foam::viscousNumberLimit::viscousNumberLimit
     const word& UName,
     const scalar nu,
     const scalar fluidDensity,
+    const scalar virtualMass,
     const scalar longestPeriod
 )
 :
@@ -236,6 +323,7 @@ Foam::viscousNumberLimit::viscousNumberLimit
     UName_(UName),
     nu_(nu),
     fluidDensity_(fluidDensity),
+    virtualMass_(virtualMass),
     longestPeriod_(longestPeriod),
     userLimit_(0),
     inverseSquareSpacing_(mesh.nCells(), scalar(0)),
@@ -323,7 +411,8 @@ Foam::scalar Foam::viscousNumberLimit::measuredLimit
     const label outer,
     const label nCorrectors,
     const scalar cellsPerDiameter,
-    const scalar densityRatio
+    const scalar densityRatio,
+    const scalar virtualMass
 )
 {
     auto atResolution = [cellsPerDiameter](const measuredSetting& m)
@@ -345,7 +434,7 @@ Foam::scalar Foam::viscousNumberLimit::measuredLimit
         tableEntry(true, momentumPredictor, consistent, outer, nCorrectors);
     return
         free
-      ? min(fixedLimit, freeLimitAt(*free, densityRatio))
+      ? min(fixedLimit, freeLimitAt(*free, densityRatio, virtualMass))
       : fixedLimit;
 }
 
@@ -368,7 +457,7 @@ Foam::scalar Foam::viscousNumberLimit::limit
         (
             body.motion().isFree(), s.momentumPredictor, s.consistent,
             s.outer, s.nCorrectors, cellsPerDiameter,
-            body.density()/fluidDensity_
+            body.density()/fluidDensity_, virtualMass_
         );
 }
 
@@ -379,6 +468,102 @@ std::string Foam::viscousNumberLimit::describe() const
         "viscous number " + shortNumber(lastMax_) + " (limit "
       + (lastLimit_ < GREAT ? shortNumber(lastLimit_) : std::string("none"))
       + ")";
+}
+
+
+void Foam::viscousNumberLimit::stop
+(
+    const immersedBody& body,
+    const scalar lambda,
+    const scalar lim,
+    const scalar bodyCells,
+    const scalar periodScale,
+    const scalar dt,
+    const settings& s
+) const
+{
+    const scalar cells = bodyCells*periodScale;
+    const bool freeBody = body.motion().isFree();
+    const scalar ratio = body.density()/fluidDensity_;
+    // the limit of this body with the momentum predictor and other pressure
+    // correctors, or the consistent pressure equation
+    auto alternative = [&](const bool consistent, const label nCorrectors)
+    {
+        return
+            shortNumber
+            (
+                measuredLimit
+                (
+                    freeBody, true, consistent, s.outer, nCorrectors, cells,
+                    ratio, virtualMass_
+                )
+            );
+    };
+    const std::string alternatives =
+        "momentumPredictor yes with nCorrectors 2 / 3 / 4: "
+      + alternative(false, 2) + " / " + alternative(false, 3) + " / "
+      + alternative(false, 4) + ", consistent yes with 2: "
+      + alternative(true, 2);
+    // the body, its resolution and the settings its limit was measured for
+    const std::string measured =
+        (
+            freeBody
+          ? "a free body of density ratio " + shortNumber(ratio)
+          + " and virtual mass C_v " + shortNumber(virtualMass_)
+          : std::string("a fixed or prescribed body")
+        )
+      + " at " + shortNumber(bodyCells)
+      + " cells per equal-volume diameter"
+      + (
+            periodScale > 1
+          ? " in a period of " + shortNumber(scannedPeriod*periodScale)
+          + " D_eq (as limiting as " + shortNumber(cells)
+          + " cells per D_eq in the scans' period of "
+          + shortNumber(scannedPeriod) + " D_eq)"
+          : std::string()
+        )
+      + " with " + s.dictName + " momentumPredictor "
+      + (s.momentumPredictor ? "yes" : "no")
+      + (s.consistent ? ", consistent yes" : "") + ", nCorrectors "
+      + std::to_string(s.nCorrectors) + " and nOuterCorrectors "
+      + std::to_string(s.nOuterCorrectors)
+      + (s.outer == label(outerMode::relaxed) ? " (relaxed)" : "")
+      + " in system/fvSolution";
+
+    if (!(lim > 0))
+    {
+        // a measured limit of 0: the scan's lowest lambda was unstable
+        FatalErrorInFunction
+            << "the coupling of body '" << body.name() << "', "
+            << measured.c_str() << ", was found unstable at the lowest"
+            << " viscous number nu deltaT/h^2 of the scans (0.0625,"
+            << " validation/viscousNumber): with these settings a free body"
+            << " this light has no measured stable time step" << nl
+            << "    Allowed: virtualMass 0.5 (the default) or more in"
+            << " constant/immersedBodiesProperties, or settings with a limit"
+            << " for this body: " << alternatives.c_str()
+            << ", or maxViscousNumber in constant/immersedBodiesProperties"
+            << " for a set-up shown stable."
+            << exit(FatalError);
+    }
+    const std::string where =
+        userLimit_ > 0
+      ? std::string("maxViscousNumber of constant/immersedBodiesProperties")
+      : "the limit measured (validation/viscousNumber) for " + measured;
+    FatalErrorInFunction
+        << "the viscous number nu deltaT/h^2 in the cells of body '"
+        << body.name() << "' is " << shortNumber(lambda).c_str()
+        << " at deltaT " << shortNumber(dt).c_str() << ", above "
+        << shortNumber(lim).c_str() << ", " << where.c_str() << nl
+        << "    Above it the pressure-velocity coupling grows a period-two"
+        << " oscillation until the run fails." << nl
+        << "    Allowed: deltaT <= "
+        << shortNumber(floorSignificant(dt*lim/lambda)).c_str()
+        << " (maxDeltaT in system/controlDict), or settings with a higher"
+        << " limit for this body: " << alternatives.c_str()
+        << ", or maxViscousNumber in constant/immersedBodiesProperties"
+        << " for a set-up shown stable above it."
+        << exit(FatalError);
 }
 
 
@@ -423,10 +608,12 @@ Foam::scalar Foam::viscousNumberLimit::check
             max(scalar(1), longestPeriod_/(scannedPeriod*dEq));
         bodyLimit[bodyi] =
             limit(bodies[bodyi], bodyCells[bodyi]*periodScale[bodyi], s);
+        // the largest ratio of value to limit, compared without dividing (a
+        // measured limit may be 0)
         if
         (
             worst < 0
-         || bodyMax[bodyi]/bodyLimit[bodyi] > bodyMax[worst]/bodyLimit[worst]
+         || bodyMax[bodyi]*bodyLimit[worst] > bodyMax[worst]*bodyLimit[bodyi]
         )
         {
             worst = bodyi;
@@ -439,75 +626,11 @@ Foam::scalar Foam::viscousNumberLimit::check
         return lastMax_;
     }
 
-    const immersedBody& body = bodies[worst];
-    const scalar lambda = bodyMax[worst];
-    const scalar lim = bodyLimit[worst];
-    const scalar cells = bodyCells[worst]*periodScale[worst];
-    const bool freeBody = body.motion().isFree();
-    const scalar ratio = body.density()/fluidDensity_;
-    // the limit of this body with the momentum predictor and other pressure
-    // correctors, or the consistent pressure equation
-    auto alternative = [&](const bool consistent, const label nCorrectors)
-    {
-        return
-            shortNumber
-            (
-                measuredLimit
-                (
-                    freeBody, true, consistent, s.outer, nCorrectors, cells,
-                    ratio
-                )
-            );
-    };
-    const string where =
-        userLimit_ > 0
-      ? string("maxViscousNumber of constant/immersedBodiesProperties")
-      : string
-        (
-            "the limit measured (validation/viscousNumber) for a "
-          + (
-                freeBody
-              ? "free body of density ratio " + shortNumber(ratio)
-              : std::string("fixed or prescribed body")
-            )
-          + " at " + shortNumber(bodyCells[worst])
-          + " cells per equal-volume diameter"
-          + (
-                periodScale[worst] > 1
-              ? " in a period of "
-              + shortNumber(scannedPeriod*periodScale[worst])
-              + " D_eq (as limiting as " + shortNumber(cells)
-              + " cells per D_eq in the scans' period of "
-              + shortNumber(scannedPeriod) + " D_eq)"
-              : std::string()
-            )
-          + " with "
-          + s.dictName + " momentumPredictor "
-          + word(s.momentumPredictor ? "yes" : "no")
-          + (s.consistent ? ", consistent yes" : "") + ", nCorrectors "
-          + Foam::name(s.nCorrectors) + " and nOuterCorrectors "
-          + Foam::name(s.nOuterCorrectors)
-          + (s.outer == label(outerMode::relaxed) ? " (relaxed)" : "")
-          + " in system/fvSolution"
-        );
-    FatalErrorInFunction
-        << "the viscous number nu deltaT/h^2 in the cells of body '"
-        << body.name() << "' is " << shortNumber(lambda).c_str()
-        << " at deltaT " << shortNumber(dt).c_str() << ", above "
-        << shortNumber(lim).c_str() << ", " << where.c_str() << nl
-        << "    Above it the pressure-velocity coupling grows a period-two"
-        << " oscillation until the run fails." << nl
-        << "    Allowed: deltaT <= "
-        << shortNumber(floorSignificant(dt*lim/lambda)).c_str()
-        << " (maxDeltaT in system/controlDict), or settings with a higher"
-        << " limit for this body: momentumPredictor yes with nCorrectors"
-        << " 2 / 3 / 4: " << alternative(false, 2).c_str() << " / "
-        << alternative(false, 3).c_str() << " / "
-        << alternative(false, 4).c_str() << ", consistent yes with 2: "
-        << alternative(true, 2).c_str()
-        << ", or maxViscousNumber in constant/immersedBodiesProperties"
-        << " for a set-up shown stable above it."
-        << exit(FatalError);
+    stop
+    (
+        bodies[worst], bodyMax[worst], bodyLimit[worst], bodyCells[worst],
+        periodScale[worst], dt, s
+    );
     return lastMax_;
 }
 

@@ -35,7 +35,8 @@ import numpy as np
 import caseWriter
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
-from validationTools import cpu_seconds, provenance, read_csv, run_logged, write_csv  # noqa: E402
+from validationTools import (cpu_seconds, locked, provenance, read_csv,  # noqa: E402
+                             run_logged, write_csv)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 RESULTS = os.path.join(HERE, "results")
@@ -122,10 +123,11 @@ def do_run(args):
         row = run_one(name, **kw)
         print(f"  -> C_D {row['C_D']}, C_L {row['C_L']}, C_T {row['C_T']} (change over the last "
               f"{SETTLE_WINDOW:g} D/U: {row['C_D_change_pct']} %)", flush=True)
-        old = read_csv(RUNS_CSV)    # a rerun keeps its row's place
-        rows = [row if r["name"] == name else r for r in old]
-        write_csv(RUNS_CSV, rows if any(r["name"] == name for r in old) else old + [row],
-                  FIELDS)
+        with locked(RUNS_CSV):
+            old = read_csv(RUNS_CSV)    # a rerun keeps its row's place
+            rows = [row if r["name"] == name else r for r in old]
+            write_csv(RUNS_CSV, rows if any(r["name"] == name for r in old) else old + [row],
+                      FIELDS)
 
 
 def do_plot():

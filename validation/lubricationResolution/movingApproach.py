@@ -38,8 +38,8 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import lubricationResolution as lr  # noqa: E402
-from validationTools import (cpu_seconds, mesh_cells, provenance, read_csv,  # noqa: E402
-                             run_logged, write_csv)
+from validationTools import (cpu_seconds, locked, mesh_cells, provenance,  # noqa: E402
+                             read_csv, run_logged, write_csv)
 
 START_GAP, FIRST_GAP, LAST_GAP, END_GAP = 0.6, 0.5, 1e-3, 5e-4   # h/d
 CELLS_PER_STEP = 0.0025   # the gap closes by this many cells per time step
@@ -149,9 +149,10 @@ def run(cpd, shape, force):
            "samples": len(rows), "max_abs_error_pct": f"{abs(worst['error_pct']):.3f}",
            "worst_gap": f"{worst['gap']:.4g}",
            "cpu_s": f"{cpu_seconds(case, 'log.solver'):.0f}", **provenance()}
-    rows_csv = [r for r in read_csv(RUNS_CSV) if r["name"] != name] + [row]
-    write_csv(RUNS_CSV, sorted(rows_csv, key=lambda r: (r["shape"], int(r["cpd"]))), RUN_FIELDS,
-              ignore_extra=True)
+    with locked(RUNS_CSV):
+        rows_csv = [r for r in read_csv(RUNS_CSV) if r["name"] != name] + [row]
+        write_csv(RUNS_CSV, sorted(rows_csv, key=lambda r: (r["shape"], int(r["cpd"]))),
+                  RUN_FIELDS, ignore_extra=True)
     print(f"{name}: {len(rows)} steps from {FIRST_GAP:g} d to {LAST_GAP:g} d, largest error "
           f"{worst['error_pct']:+.2f} % at {worst['gap']:.4g} d", flush=True)
 

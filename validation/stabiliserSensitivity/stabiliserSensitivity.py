@@ -39,8 +39,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = str(Path(HERE).parents[1])
 sys.path.insert(0, os.path.join(TOP, "validation", "tools"))
 sys.path.insert(0, os.path.join(TOP, "validation", "wetRebound"))
-from validationTools import (cpu_seconds, provenance, read_csv, run_logged,  # noqa: E402
-                             substitute, substitute_re, write_csv)
+from validationTools import (cpu_seconds, locked, provenance, read_csv,  # noqa: E402
+                             run_logged, substitute, substitute_re, write_csv)
 import wetRebound  # noqa: E402
 
 RESULTS = os.path.join(HERE, "results")
@@ -166,9 +166,11 @@ def run(name, variant, force):
            "figures": ";".join(f"{k}={v:.6g}" for k, v in figures.items()),
            "cpu_s": f"{cpu_seconds(case, 'log.immersedSpheroidFoam'):.0f}", **provenance()}
     os.makedirs(RESULTS, exist_ok=True)
-    rows = [r for r in read_csv(RUNS_CSV) if r["name"] != tag] + [row]
     order = {(c, v): i for i, (c, v) in enumerate((c, v) for c in CASES for v in VARIANTS)}
-    write_csv(RUNS_CSV, sorted(rows, key=lambda r: order[(r["case"], r["variant"])]), FIELDS)
+    with locked(RUNS_CSV):
+        rows = [r for r in read_csv(RUNS_CSV) if r["name"] != tag] + [row]
+        write_csv(RUNS_CSV, sorted(rows, key=lambda r: order[(r["case"], r["variant"])]),
+                  FIELDS)
 
 
 def collect():

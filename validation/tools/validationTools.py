@@ -18,7 +18,9 @@ entry, as set_entry) must be found exactly once:
     validationTools.py substitute FILE OLD NEW [OLD NEW ...]
     validationTools.py set FILE KEY VALUE [KEY VALUE ...]
 """
+import contextlib
 import csv
+import fcntl
 import os
 import re
 import socket
@@ -91,6 +93,15 @@ def read_csv(path, missing_ok=True):
         return []
     with open(path, newline="") as f:
         return list(csv.DictReader(f))
+
+
+@contextlib.contextmanager
+def locked(path):
+    """An exclusive lock (path.lock) held over a read, merge and write of the file path, so
+    that runs of one campaign side by side do not lose each other's rows."""
+    with open(f"{path}.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        yield
 
 
 def write_csv(path, rows, fields=None, ignore_extra=False):

@@ -78,7 +78,6 @@ quick: the check of tests/foam/viscousNumberQuick, in DIR: sphere8 with the
      stopped by the module at QUICK_PERIOD_LAMBDA; exit status 1 otherwise.
 """
 import argparse
-import fcntl
 import json
 import math
 import os
@@ -93,8 +92,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "stokesDrag"))
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
 import caseWriter  # noqa: E402
-from validationTools import (provenance, read_csv, run_logged, set_entry,  # noqa: E402
-                             substitute, write_csv, write_dict)
+from validationTools import (locked, provenance, read_csv, run_logged,  # noqa: E402
+                             set_entry, substitute, write_csv, write_dict)
 
 RESULTS = os.path.join(HERE, "results")
 RUNS_CSV = os.path.join(RESULTS, "runs.csv")
@@ -573,8 +572,7 @@ def do_run(args):
         row = run_test(name, setting, lam)
         # merged with the file as it is now, under a lock: scans of other cases may run
         # beside this one
-        with open(RUNS_CSV + ".lock", "w") as lock:
-            fcntl.flock(lock, fcntl.LOCK_EX)
+        with locked(RUNS_CSV):
             rows = [r for r in read_csv(RUNS_CSV)
                     if not (r["case"] == name and r["setting"] == setting
                             and abs(float(r["lam"]) / lam - 1) < 1e-9)] + [row]

@@ -50,8 +50,8 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
-from validationTools import (cpu_seconds, mesh_cells, provenance, read_csv, run_logged,  # noqa: E402
-                             substitute, write_csv)
+from validationTools import (cpu_seconds, merge_row, mesh_cells, provenance,  # noqa: E402
+                             read_csv, run_logged, substitute, write_csv)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 RESULTS = os.path.join(HERE, "results")
@@ -351,8 +351,7 @@ def run_one(shape, cpd, tilt, end, np_, force, quick, offset=OFFSET):
           flush=True)
     if not quick:
         shutil.copy(h5, os.path.join(RESULTS, f"{tag}.h5"))
-    write_csv(out_csv, [x for x in read_csv(out_csv) if x["tag"] != tag] + [row], FIELDS,
-              ignore_extra=True)
+    merge_row(out_csv, row, "tag", FIELDS, ignore_extra=True)
 
 
 # ---------------------------------------------------------------------------

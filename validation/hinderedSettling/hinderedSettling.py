@@ -46,7 +46,6 @@ not the tutorial's
 core runs.
 """
 import argparse
-import fcntl
 import math
 import os
 import re
@@ -67,9 +66,9 @@ TUTORIAL = TOP / "tutorials" / "periodicSuspension"
 sys.path.insert(0, str(HERE.parent / "tools"))
 sys.path.insert(0, str(HERE.parent / "finiteReynoldsDrag"))
 sys.path.insert(0, str(TUTORIAL))
-from validationTools import (cpu_seconds, execution_times, mesh_cells,  # noqa: E402
-                             provenance, read_csv, run_logged, set_entry, write_csv,
-                             write_dict)
+from validationTools import (cpu_seconds, execution_times, locked,  # noqa: E402
+                             merge_row, mesh_cells, provenance, read_csv, run_logged,
+                             set_entry, write_csv, write_dict)
 
 DEFAULT_GA = 20.0         # Galileo number sqrt((rho_p/rho_f - 1) g D^3)/nu
 RATIO = 2.0               # rho_p/rho_f
@@ -247,8 +246,7 @@ def do_reference(args):
         print(f"{name}: C_D {cd:.5f}, (3/4) C_D Re^2/Ga^2 = {balance(reynolds, cd):.5f}",
               flush=True)
         path = os.path.join(results, "reference.csv")
-        with open(path + ".lock", "w") as lock:
-            fcntl.flock(lock, fcntl.LOCK_EX)
+        with locked(path):
             write_csv(path, read_csv(path) + [out], REF_FIELDS)
     rows = reference_rows(results, args.cpd, args.domain_scale)
     miss = min(abs(balance(r["Re"], r["C_D"]) - 1) for r in rows)
@@ -531,10 +529,7 @@ def do_run(args):
         else:
             row, history = run_case(case, name, **kw, fresh=args.force)
         save_history(results, name, history)
-        with open(path + ".lock", "w") as lock:
-            fcntl.flock(lock, fcntl.LOCK_EX)      # one writer at a time
-            write_csv(path, [r for r in read_csv(path) if r["name"] != name] + [row],
-                      RUN_FIELDS)
+        merge_row(path, row, "name", RUN_FIELDS)
         print(f"  -> -<v_z> {row['w']} +- {row['w_se']} V_g ({row['bodies']} spheres, "
               f"phi {row['phi']})", flush=True)
 

@@ -26,8 +26,8 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
-from validationTools import (provenance, read_csv, run_logged, set_entry,  # noqa: E402
-                             substitute_re, write_csv)
+from validationTools import (merge_row, provenance, read_csv, run_logged,  # noqa: E402
+                             set_entry, substitute_re, write_csv)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -153,8 +153,7 @@ def run_one(friction, cpd, force, quick):
     print("  " + ", ".join(f"{k} {row[k]}" for k in FIELDS[6:15]), flush=True)
     if not quick:
         shutil.copy(h5, os.path.join(RESULTS, f"{tag}.h5"))
-    write_csv(out_csv, [x for x in read_csv(out_csv) if x["name"] != tag] + [row], FIELDS,
-              ignore_extra=True)
+    merge_row(out_csv, row, "name", FIELDS, ignore_extra=True)
 
 
 def write_metrics(rows):

@@ -104,6 +104,14 @@ def locked(path):
         yield
 
 
+def merge_row(path, row, key, fields=None, ignore_extra=False):
+    """Under locked(path): the rows of the CSV file path whose column key differs from row's,
+    then row, written back (write_csv's fields and ignore_extra)."""
+    with locked(path):
+        write_csv(path, [r for r in read_csv(path) if r[key] != row[key]] + [row], fields,
+                  ignore_extra)
+
+
 def write_csv(path, rows, fields=None, ignore_extra=False):
     """Write rows (dicts) to the CSV file path, creating its folder. fields: the columns in
     order (default: the keys of the first row); ignore_extra: drop keys of a row that are not

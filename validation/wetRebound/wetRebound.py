@@ -44,8 +44,8 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
-from validationTools import (cpu_seconds, provenance, read_csv, run_logged,  # noqa: E402
-                             substitute_re, write_csv)
+from validationTools import (cpu_seconds, merge_row, provenance, read_csv,  # noqa: E402
+                             run_logged, substitute_re, write_csv)
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "lubricationResolution"))
 from sphereWallStokes import brenner  # noqa: E402  (Brenner's exact series, gap over the radius)
 
@@ -336,8 +336,7 @@ def run_one(name, cpd, force, quick, max_overlap=None, saturation=None, virtual_
           f"{r['max_overlap_a']:.3f} a, wall {wall:.0f} s", flush=True)
     if not quick:
         shutil.copy(h5, os.path.join(RESULTS, f"{tag}.h5"))
-    write_csv(out_csv, [x for x in read_csv(out_csv) if x["name"] != tag] + [row], FIELDS,
-              ignore_extra=True)
+    merge_row(out_csv, row, "name", FIELDS, ignore_extra=True)
 
 
 def after_film_text(r):

@@ -44,7 +44,6 @@ Each finished run appends a row to results/runs.csv (gap, forces, steadiness, CP
 commit).
 """
 import argparse
-import fcntl
 import json
 import math
 import os
@@ -55,8 +54,8 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
-from validationTools import (cpu_seconds, mesh_cells, provenance, read_csv,  # noqa: E402
-                             refined_box_mesh, run_logged, write_csv, write_dict)
+from validationTools import (cpu_seconds, merge_row, mesh_cells, provenance,  # noqa: E402
+                             read_csv, refined_box_mesh, run_logged, write_dict)
 from sphereWallStokes import brenner, two_spheres_approaching  # noqa: E402  (gap over the radius)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -383,11 +382,8 @@ def run_one(cpd, gap, force, quick, rescore_only=False, motion="approach", box_h
     else:
         row["brenner"] = f"{ref:.6g}"
         csv, fields = (PAIR_CSV if shape == "spherePair" else RUNS_CSV), FIELDS
-    # two runs at a time share the CSV: read, replace and write it under a lock
-    with open(csv + ".lock", "w") as lock:
-        fcntl.flock(lock, fcntl.LOCK_EX)
-        rows = [r for r in read_csv(csv) if r["name"] != name] + [row]
-        write_csv(csv, rows, fields, ignore_extra=True)
+    # two runs at a time share the CSV
+    merge_row(csv, row, "name", fields, ignore_extra=True)
 
 
 def paraboloid_force(shape, gap):
@@ -434,10 +430,7 @@ def record_spheroid(case, name, shape, cpd, gap, x, quick):
            "unsteadiness": f"{x['unsteadiness']:.2e}",
            "cpu_s": f"{cpu_seconds(case, 'log.solver'):.0f}", **provenance()}
     os.makedirs(RESULTS, exist_ok=True)
-    with open(SPHEROID_CSV + ".lock", "w") as lock:
-        fcntl.flock(lock, fcntl.LOCK_EX)
-        rows = [r for r in read_csv(SPHEROID_CSV) if r["name"] != name] + [row]
-        write_csv(SPHEROID_CSV, rows, SPHEROID_FIELDS, ignore_extra=True)
+    merge_row(SPHEROID_CSV, row, "name", SPHEROID_FIELDS, ignore_extra=True)
 
 
 def sphere_wall_reference(gap):

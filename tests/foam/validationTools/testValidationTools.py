@@ -144,6 +144,64 @@ class Tables(unittest.TestCase):
                 vt.read_csv(missing, missing_ok=False)
 
 
+    def test_failed_write_keeps_the_file(self):
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "runs.csv")
+            vt.write_csv(path, [dict(name="a", value=1)])
+            with self.assertRaises(ValueError):
+                vt.write_csv(path, [dict(name="b", value=2, extra=3)], ["name", "value"])
+            self.assertEqual(vt.read_csv(path), [dict(name="a", value="1")])
+            self.assertEqual(os.listdir(d), ["runs.csv"])
+
+    def test_merge_row_from_processes_side_by_side(self):
+        # four processes each replace and add rows of one CSV file at once: every row stays,
+        # whole, and a replaced row appears once
+        import multiprocessing
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "results", "runs.csv")
+            vt.write_csv(path, [dict(name="seed", value=0)], ["name", "value"])
+            ctx = multiprocessing.get_context("fork")
+            workers = [ctx.Process(target=merge_rows, args=(path, w)) for w in range(4)]
+            for p in workers:
+                p.start()
+            for p in workers:
+                p.join(60)
+                self.assertEqual(p.exitcode, 0)
+            rows = vt.read_csv(path, missing_ok=False)
+            names = sorted(r["name"] for r in rows)
+            expected = sorted(["seed"] + [f"w{w}-{i}" for w in range(4) for i in range(25)])
+            self.assertEqual(names, expected)
+            self.assertTrue(all(r["value"] == "final" for r in rows if r["name"] != "seed"))
+
+
+def merge_rows(path, worker):
+    """25 rows added by one process and then each replaced (merge_row)."""
+    for i in range(25):
+        vt.merge_row(path, dict(name=f"w{worker}-{i}", value="first"), "name", ["name", "value"])
+    for i in range(25):
+        vt.merge_row(path, dict(name=f"w{worker}-{i}", value="final"), "name", ["name", "value"])
+
+
+class CommittedTables(unittest.TestCase):
+    def test_every_row_as_wide_as_its_header(self):
+        # the validations' CSV files in the repository (a row split by a write that another
+        # run read half done would be narrower or wider); lines starting with # are comments
+        import csv
+        root = TOOLS.parents[1]
+        listed = subprocess.run(["git", "-C", str(root), "ls-files", "validation/*.csv"],
+                                capture_output=True, text=True)
+        self.assertEqual(listed.returncode, 0, listed.stderr)
+        files = sorted(root / f for f in listed.stdout.split())
+        self.assertGreater(len(files), 20)
+        for f in files:
+            with open(f, newline="") as fh:
+                rows = [r for r in csv.reader(line for line in fh if not line.startswith("#"))]
+            with self.subTest(file=str(f.relative_to(root))):
+                self.assertTrue(rows)
+                bad = [i for i, r in enumerate(rows[1:], 2) if len(r) != len(rows[0])]
+                self.assertEqual(bad, [], f"{f}: rows of another width than the header")
+
+
 class Logs(unittest.TestCase):
     def test_cpu_seconds_and_cells(self):
         with tempfile.TemporaryDirectory() as d:

@@ -17,8 +17,9 @@ without an immersed body:
      along x);
   prolate8, oblate8: the same for spheroids of aspect ratio 2 and 0.5 (flow
      along the symmetry axis), 8 cells per equal-volume diameter D_eq;
-  sphere8_box6, sphere8_box8, sphere8_box12: sphere8 in periodic boxes of 6,
-     8 and 12 D (BOX); sphere12_box8: sphere12 in the box of 8 D;
+  sphere8_box6, sphere8_box8, sphere8_box12, sphere8_box16: sphere8 in
+     periodic boxes of 6, 8, 12 and 16 D (BOX); sphere12_box8, sphere16_box8:
+     sphere12 and sphere16 in the box of 8 D;
   sphere8_box4x4x8, sphere8_box8x4x4: sphere8 in periodic boxes 8 D long
      across the flow (z) and along it (x), 4 D in the other directions;
   moving8_box4, moving8_box8: the sphere of sphere8 moved at 0.02 through fluid
@@ -144,10 +145,13 @@ CASES = {
     # a sphere moved at constant velocity through fluid at rest (MOVING)
     "moving8_box4": ("body", 8, 1.6, ["pred_c2"], 1.0),
     "moving8_box8": ("body", 8, 1.6, ["pred_c2"], 1.0),
-    # sphere8 in larger boxes (BOX), sphere12 in the box of 8 D (as many cells across as
-    # sphere8 in that of 12 D), and sphere8 in boxes 8 D long across the flow and along it
+    # sphere8 in larger boxes (BOX), sphere12 and sphere16 in the box of 8 D (as many cells
+    # across as sphere8 in those of 12 and 16 D), and sphere8 in boxes 8 D long across the
+    # flow and along it
     "sphere8_box12": ("body", 8, 1.6, ["pred_c2"], 1.0),
     "sphere12_box8": ("body", 12, 1.6, ["pred_c2"], 1.0),
+    "sphere8_box16": ("body", 8, 1.6, ["pred_c2"], 1.0),
+    "sphere16_box8": ("body", 16, 0.8, ["pred_c2"], 1.0),
     "sphere8_box4x4x8": ("body", 8, 1.6, ["pred_c2"], 1.0),
     "sphere8_box8x4x4": ("body", 8, 1.6, ["pred_c2"], 1.0),
     "sphere8_box6": ("body", 8, 1.6, ["pred_c2", "pred_c3", "pred_c2_consistent"], 1.0),
@@ -202,6 +206,7 @@ VIRTUAL_MASS = {name: cv for name in CASES
 # in a longest period L above SCANNED_PERIOD as one at c L/SCANNED_PERIOD (period_cells)
 SCANNED_PERIOD = 4.0
 BOX = {"sphere8_box6": 6.0, "sphere8_box8": 8.0, "sphere8_box12": 12.0, "sphere12_box8": 8.0,
+       "sphere8_box16": 16.0, "sphere16_box8": 8.0,
        "moving8_box4": 4.0, "moving8_box8": 8.0,
        "sphere8_box4x4x8": (4.0, 4.0, 8.0), "sphere8_box8x4x4": (8.0, 4.0, 4.0)}
 # prescribed-motion cases: the sphere moves at (-0.02, 0, 0) through fluid at rest in the
@@ -781,7 +786,7 @@ def do_plot(_args):
 FIXED_CASES = ["sphere6", "sphere8", "sphere12", "sphere16", "prolate8", "oblate8",
                "sphere8_box6", "sphere8_box8", "sphere8_open", "sphere8_open_small",
                "moving8_box4", "moving8_box8", "sphere8_box4x4x8", "sphere8_box8x4x4",
-               "sphere8_box12", "sphere12_box8"]
+               "sphere8_box12", "sphere12_box8", "sphere8_box16", "sphere16_box8"]
 FREE_CASES = ["settling24", "settling36"]
 
 

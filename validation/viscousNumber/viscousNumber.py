@@ -580,8 +580,8 @@ def do_run(args):
         if done and not args.force:
             return done[-1]["status"] == "stable"
         row = run_test(name, setting, lam)
-        # merged with the file as it is now, under a lock: scans of other cases may run
-        # beside this one
+        # merged with the file's current rows under its lock: scans of other cases may
+        # run beside this one
         with locked(RUNS_CSV):
             rows = [r for r in read_csv(RUNS_CSV)
                     if not (r["case"] == name and r["setting"] == setting

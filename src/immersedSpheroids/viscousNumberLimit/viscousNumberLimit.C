@@ -52,8 +52,9 @@ struct measuredSetting
 constexpr scalar referenceCellsPerDiameter = 16;
 
 //- The side of the periodic box of the fixed-body scans, in equal-volume
-//  diameters: in a longer period the limit falls as it does with the
-//  resolution (the scans in boxes of 6 and 8 D_eq)
+//  diameters: in a longer period the limit is taken to fall as it does with
+//  the resolution (the scans in boxes of 6 and 8 D_eq; boxes of 12 and 16
+//  D_eq fall less, so the rule is conservative there)
 constexpr scalar scannedPeriod = 4;
 
 constexpr measuredSetting measuredLimits[] =

@@ -75,7 +75,7 @@ constexpr measuredSetting measuredLimits[] =
     {false, true, false, 0, 4, 74.5, 1.28, 0, 0},
     {true, false, false, 0, 2, 1, 0, 0.1, 0},
     {true, false, false, 0, 2, 1.68, 0, 0.1, 0.5},
-    {true, false, false, 0, 2, 0, 0, 0.3, 0},
+    {true, false, false, 0, 2, 1, 0, 0.3, 0},
     {true, false, false, 0, 2, 1.68, 0, 0.3, 0.5},
     {true, false, false, 0, 2, 1.18, 0, 0.5, 0},
     {true, false, false, 0, 2, 1.68, 0, 0.5, 0.5},
@@ -531,22 +531,6 @@ void Foam::viscousNumberLimit::stop
       + (s.outer == label(outerMode::relaxed) ? " (relaxed)" : "")
       + " in system/fvSolution";
 
-    if (!(lim > 0))
-    {
-        // a measured limit of 0: the scan's lowest lambda was unstable
-        FatalErrorInFunction
-            << "the coupling of body '" << body.name() << "', "
-            << measured.c_str() << ", was found unstable at the lowest"
-            << " viscous number nu deltaT/h^2 of the scans (0.0625,"
-            << " validation/viscousNumber): with these settings a free body"
-            << " this light has no measured stable time step" << nl
-            << "    Allowed: virtualMass 0.5 (the default) or more in"
-            << " constant/immersedBodiesProperties, or settings with a limit"
-            << " for this body: " << alternatives.c_str()
-            << ", or maxViscousNumber in constant/immersedBodiesProperties"
-            << " for a set-up shown stable."
-            << exit(FatalError);
-    }
     const std::string where =
         userLimit_ > 0
       ? std::string("maxViscousNumber of constant/immersedBodiesProperties")

@@ -50,7 +50,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
-from validationTools import (cpu_seconds, merge_row, mesh_cells, provenance,  # noqa: E402
+from validationTools import (cpu_seconds, locked, merge_row, mesh_cells, provenance,  # noqa: E402
                              read_csv, run_logged, substitute, write_csv)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -536,16 +536,18 @@ def do_plot():
 
 
 def do_collect():
-    rows = read_csv(RUNS_CSV)
-    for row in rows:
-        r = analyse(os.path.join(RESULTS, f"{row['tag']}.h5"))
-        row.update(measured(r))
-        # the largest overlaps from the solver log, while the run's folder is there
-        log = os.path.join(HERE, "run", row["tag"], "log.immersedSpheroidFoam")
-        if os.path.exists(log):
-            ov_window, ov_run = log_max_overlap(log, r["window_end"])
-            row.update(max_overlap_window=fmt(ov_window, 3), max_overlap_run=fmt(ov_run, 3))
-    write_csv(RUNS_CSV, rows, FIELDS, ignore_extra=True)
+    # under the file's lock: a run beside this one may add its row meanwhile
+    with locked(RUNS_CSV):
+        rows = read_csv(RUNS_CSV)
+        for row in rows:
+            r = analyse(os.path.join(RESULTS, f"{row['tag']}.h5"))
+            row.update(measured(r))
+            # the largest overlaps from the solver log, while the run's folder is there
+            log = os.path.join(HERE, "run", row["tag"], "log.immersedSpheroidFoam")
+            if os.path.exists(log):
+                ov_window, ov_run = log_max_overlap(log, r["window_end"])
+                row.update(max_overlap_window=fmt(ov_window, 3), max_overlap_run=fmt(ov_run, 3))
+        write_csv(RUNS_CSV, rows, FIELDS, ignore_extra=True)
     print(f"drafting: {len(rows)} runs re-analysed")
 
 

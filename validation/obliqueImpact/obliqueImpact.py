@@ -26,7 +26,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
-from validationTools import (merge_row, provenance, read_csv, run_logged,  # noqa: E402
+from validationTools import (locked, merge_row, provenance, read_csv, run_logged,  # noqa: E402
                              set_entry, substitute_re, write_csv)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -218,10 +218,12 @@ def do_plot():
 
 
 def do_collect():
-    rows = read_csv(RUNS_CSV)
-    for row in rows:
-        row.update(measured(analyse(os.path.join(RESULTS, f"{row['name']}.h5"))))
-    write_csv(RUNS_CSV, rows, FIELDS, ignore_extra=True)
+    # under the file's lock: a run beside this one may add its row meanwhile
+    with locked(RUNS_CSV):
+        rows = read_csv(RUNS_CSV)
+        for row in rows:
+            row.update(measured(analyse(os.path.join(RESULTS, f"{row['name']}.h5"))))
+        write_csv(RUNS_CSV, rows, FIELDS, ignore_extra=True)
     print(f"obliqueImpact: {len(rows)} runs re-analysed")
 
 

@@ -42,7 +42,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
-from validationTools import (cpu_seconds, merge_row, provenance, read_csv,  # noqa: E402
+from validationTools import (cpu_seconds, locked, merge_row, provenance, read_csv,  # noqa: E402
                              run_logged, substitute_re, write_csv)
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "wetRebound"))
 import wetRebound as wr  # noqa: E402  (the normal rebound's case, St 152)
@@ -363,12 +363,14 @@ def do_plot():
 
 
 def do_collect():
-    rows = read_csv(RUNS_CSV)
-    for r in rows:
-        h5 = os.path.join(RESULTS, f"{r['name']}.h5")
-        if os.path.exists(h5):
-            r.update(measured(analyse(h5)))
-    write_csv(RUNS_CSV, rows, FIELDS, ignore_extra=True)
+    # under the file's lock: a run beside this one may add its row meanwhile
+    with locked(RUNS_CSV):
+        rows = read_csv(RUNS_CSV)
+        for r in rows:
+            h5 = os.path.join(RESULTS, f"{r['name']}.h5")
+            if os.path.exists(h5):
+                r.update(measured(analyse(h5)))
+        write_csv(RUNS_CSV, rows, FIELDS, ignore_extra=True)
 
 
 def main():

@@ -176,15 +176,17 @@ def run(name, variant, force):
 def collect():
     """Re-analyse the runs kept in run/ (after a change of the analysis); rows whose run folder
     is gone keep their figures."""
-    rows = read_csv(RUNS_CSV, missing_ok=False)
-    for row in rows:
-        case = os.path.join(RUNS, row["name"])
-        if os.path.exists(os.path.join(case, "postProcessing", "immersedBodies", "bodies.h5")):
-            figures = analyse(case, row["case"])
-            row["figures"] = ";".join(f"{k}={v:.6g}" for k, v in figures.items())
-        else:
-            print(f"{row['name']}: no run folder, figures kept")
-    write_csv(RUNS_CSV, rows, FIELDS)
+    # under the file's lock: a run beside this one may add its row meanwhile
+    with locked(RUNS_CSV):
+        rows = read_csv(RUNS_CSV, missing_ok=False)
+        for row in rows:
+            case = os.path.join(RUNS, row["name"])
+            if os.path.exists(os.path.join(case, "postProcessing", "immersedBodies", "bodies.h5")):
+                figures = analyse(case, row["case"])
+                row["figures"] = ";".join(f"{k}={v:.6g}" for k, v in figures.items())
+            else:
+                print(f"{row['name']}: no run folder, figures kept")
+        write_csv(RUNS_CSV, rows, FIELDS)
 
 
 def figures_of(rows):

@@ -44,7 +44,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
-from validationTools import (cpu_seconds, merge_row, provenance, read_csv,  # noqa: E402
+from validationTools import (cpu_seconds, locked, merge_row, provenance, read_csv,  # noqa: E402
                              run_logged, substitute_re, write_csv)
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "lubricationResolution"))
 from sphereWallStokes import brenner  # noqa: E402  (Brenner's exact series, gap over the radius)
@@ -653,11 +653,13 @@ def do_plot():
 
 
 def do_collect():
-    rows = read_csv(RUNS_CSV)
-    for row in rows:
-        name = row["name"].split("-c")[0]
-        row.update(measured(analyse(os.path.join(RESULTS, f"{row['name']}.h5"), name)))
-    write_csv(RUNS_CSV, rows, FIELDS, ignore_extra=True)
+    # under the file's lock: a run beside this one may add its row meanwhile
+    with locked(RUNS_CSV):
+        rows = read_csv(RUNS_CSV)
+        for row in rows:
+            name = row["name"].split("-c")[0]
+            row.update(measured(analyse(os.path.join(RESULTS, f"{row['name']}.h5"), name)))
+        write_csv(RUNS_CSV, rows, FIELDS, ignore_extra=True)
     print(f"wetRebound: {len(rows)} runs re-analysed")
 
 

@@ -91,10 +91,14 @@ void Foam::immersedSpheroids::checkInsideMesh
     const polyMesh& mesh,
     const periodicDomain& domain,
     const PtrList<immersedBody>& bodies,
-    const string& when
+    const string& when,
+    const scalar wallOverlapCap
 )
 {
     const label nPoints = 1 + directions.size();
+    // the depth beyond the boundary each checked point allows, over the
+    // body's extent along its direction
+    scalarList tolerance(nPoints*bodies.size(), outsideTolerance);
     List<point> points(nPoints*bodies.size());
     boolList found(points.size(), false);
     forAll(bodies, bodyi)
@@ -102,10 +106,14 @@ void Foam::immersedSpheroids::checkInsideMesh
         const immersedBody& body = bodies[bodyi];
         const point& c = body.state().centre;
         points[nPoints*bodyi] = c;
+        const scalar wallDepth =
+            wallOverlapMargin*wallOverlapCap*body.minSemiAxis();
         forAll(directions, k)
         {
-            points[nPoints*bodyi + 1 + k] =
-                c + (1 - outsideTolerance)*(body.supportPoint(directions[k]) - c);
+            const vector extent = body.supportPoint(directions[k]) - c;
+            scalar& tol = tolerance[nPoints*bodyi + 1 + k];
+            tol = max(outsideTolerance, wallDepth/mag(extent));
+            points[nPoints*bodyi + 1 + k] = c + (1 - tol)*extent;
         }
     }
     // each rank searches only the points within its own cells' bounds (a
@@ -145,7 +153,8 @@ void Foam::immersedSpheroids::checkInsideMesh
                     << when.c_str() << ": its surface point farthest along "
                     << directionNames[k] << ", "
                     << body.supportPoint(directions[k]) << ", is beyond the"
-                    << " boundary by more than " << outsideTolerance
+                    << " boundary by more than "
+                    << tolerance[nPoints*bodyi + 1 + k]
                     << " of its extent (centre " << body.state().centre
                     << ", mesh bounds "
                     << boundBox(mesh.points(), true)

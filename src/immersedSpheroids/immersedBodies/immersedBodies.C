@@ -434,7 +434,10 @@ Foam::immersedBodies::immersedBodies(const fvMesh& mesh)
     );
     checkReplicatedState(bodies_, start);
     integrator_->checkOverlaps(bodies_, restarted);
-    checkInsideMesh(mesh, domain_, bodies_, start);
+    checkInsideMesh
+    (
+        mesh, domain_, bodies_, start, integrator_->collision().wallOverlapCap()
+    );
     checkResolution(mesh, bodies_);
 
     output_.reset
@@ -554,7 +557,11 @@ void Foam::immersedBodies::update(const volVectorField& U)
     const double collectiveCpu = integrator_->collision().collectiveCpu();
     const string afterStep("after the step to t = " + time.timeName());
     immersedSpheroids::checkReplicatedState(bodies_, afterStep);
-    immersedSpheroids::checkInsideMesh(mesh_, domain_, bodies_, afterStep);
+    immersedSpheroids::checkInsideMesh
+    (
+        mesh_, domain_, bodies_, afterStep,
+        integrator_->collision().wallOverlapCap()
+    );
     const double checksCpu = split();
     forcing_->updateCells(bodies_);
     forcing_->assemble(bodies_, penaltyRatio_*dt, dt, ddt.c);

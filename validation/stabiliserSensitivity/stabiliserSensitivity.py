@@ -22,7 +22,7 @@ The cases, each the set-up of an existing test or validation, run in run/<case>-
   the same for the upper body, its rest gap to the lower one;
 - wetRebound St 27 and St 152 (validation/wetRebound at 8 cells/d): e/e_dry (at separation),
   e(0.1 a)/e_dry (the speeds at the same gap of 0.1 a in and out, wetRebound's
-  same_gap_restitution) and the overlap;
+  same_gap_restitution), the overlap and the gap of the e/e_dry sample;
 - wallCellPenalty (tests/foam/wallCellPenaltyCase, soft): a sphere driven 0.09 a into a wall
   and out; the largest hydrodynamic force after the start over rho_f V U 2 pi f.
 
@@ -72,8 +72,8 @@ CASES = ("restingOnWall", "restingStack", "wetReboundSt27", "wetReboundSt152", "
 FIGURES = {
     "restingOnWall": ("rest_overlap_b", "max_speed", "late_speed"),
     "restingStack": ("upper_rest_gap_b", "max_speed", "late_speed"),
-    "wetReboundSt27": ("e_over_edry", "e_same_gap_0.1a", "max_overlap_a"),
-    "wetReboundSt152": ("e_over_edry", "e_same_gap_0.1a", "max_overlap_a"),
+    "wetReboundSt27": ("e_over_edry", "e_same_gap_0.1a", "max_overlap_a", "out_gap_a"),
+    "wetReboundSt152": ("e_over_edry", "e_same_gap_0.1a", "max_overlap_a", "out_gap_a"),
     "wallCellPenalty": ("peak_force",),
 }
 # figures beside the headline whose change is reported too: the rebound at separation is one
@@ -84,6 +84,7 @@ UNITS = {"rest_overlap_b": "overlap at rest / b", "upper_rest_gap_b": "upper bod
          "max_speed": "largest speed [m/s]", "late_speed": "speed over the last 0.1 s [m/s]",
          "e_over_edry": "e/e_dry", "e_same_gap_0.1a": "e(0.1 a)/e_dry",
          "max_overlap_a": "largest overlap / a",
+         "out_gap_a": "gap of the e/e_dry sample / a",
          "peak_force": "largest F_z magnitude / (rho_f V U 2 pi f)"}
 FIELDS = ["name", "case", "variant", "figures", "cpu_s", "host", "date", "commit"]
 B = 0.0015874          # the resting bodies' smaller semi-axis (restingOnWallCase)
@@ -134,7 +135,7 @@ def analyse(case, name):
         r = wetRebound.analyse(h5, name[len("wetRebound"):])
         same = wetRebound.same_gap_restitution(h5, name[len("wetRebound"):], gaps=(0.1,))[0]
         return {"e_over_edry": r["e"] / wetRebound.E_DRY, "e_same_gap_0.1a": same,
-                "max_overlap_a": r["max_overlap_a"]}
+                "max_overlap_a": r["max_overlap_a"], "out_gap_a": r["out_gap_a"]}
     with h5py.File(h5, "r", locking=False) as f:
         names = [n.decode() if isinstance(n, bytes) else str(n) for n in f["bodyNames"][()]]
         t = f["time"][()]

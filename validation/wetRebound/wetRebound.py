@@ -170,11 +170,14 @@ def analyse(h5, name):
     # the end of the stretched spring phase, is reported beside it
     inContact = np.flatnonzero(gap[i0:] < 0)
     u_spring = max(w[i0:].max(), 0.0)
+    # out_gap: the gap of the sample u_out is taken at
     if len(inContact):
         left = i0 + inContact[-1] + 1
         u_out = max(w[left:].max(), 0.0) if left < len(w) else 0.0
+        out_gap = gap[left + int(np.argmax(w[left:]))] if left < len(w) else 0.0
     else:
         u_out = u_spring
+        out_gap = gap[i0 + int(np.argmax(w[i0:]))]
     # the largest upward speed once the collision model's forces (contact and film) have
     # vanished: beyond the lubrication onset on the way out, where the film's loss on the way
     # out is complete; zero if the sphere falls back before it leaves the film's range
@@ -202,6 +205,7 @@ def analyse(h5, name):
     suction = max(-fh[up].min(), 0.0) / fc[i0:i1 + 1].max() if len(up) else 0.0
     return dict(t=t, gap=gap / d, w=w, U_in=u_in, U_out=u_out, e=u_out / u_in,
                 e_spring=u_spring / u_in, e_after_film=u_after_film / u_in, top_gap_a=top_gap / a,
+                out_gap_a=out_gap / a,
                 St=RHO_P * u_in * d / (9 * mu), max_overlap_a=max(-gap.min(), 0) / a,
                 J_coll=j_coll, J_hydro=j_hydro, J_gravity=j_gravity, J_hydro_out=j_hydro_out,
                 suction=suction)

@@ -24,7 +24,10 @@ The cases, each the set-up of an existing test or validation, run in run/<case>-
   e(0.1 a)/e_dry (the speeds at the same gap of 0.1 a in and out, wetRebound's
   same_gap_restitution), the overlap and the gap of the e/e_dry sample;
 - wallCellPenalty (tests/foam/wallCellPenaltyCase, soft): a sphere driven 0.09 a into a wall
-  and out; the largest hydrodynamic force after the start over rho_f V U 2 pi f.
+  and out; the largest hydrodynamic force after the start over rho_f V U 2 pi f;
+- fluidisedBed (tutorials/fluidisedBed, Allrun-parallel on 2 ranks, about 30 min a run; run
+  only when named with --case): the bed's voidage in its three stages of inflow and the
+  largest overlap, from the tutorial's results.md.
 
     stabiliserSensitivity.py run [--case C ...] [--variant V ...] [--force]
     stabiliserSensitivity.py collect   re-analyse the runs in run/ into results/runs.csv
@@ -67,7 +70,10 @@ VARIANTS = {
 }
 KNOBS = {"filmDampingScale": 1, "sustainedLoadOverlap": 0.5, "softCellSteps": 1,
          "contactSteps": 10, "maxOverlap": 0.1}
-CASES = ("restingOnWall", "restingStack", "wetReboundSt27", "wetReboundSt152", "wallCellPenalty")
+CASES = ("restingOnWall", "restingStack", "wetReboundSt27", "wetReboundSt152", "wallCellPenalty",
+         "fluidisedBed")
+# the cases a run without --case leaves out (their runs take half an hour each)
+LONG_CASES = ("fluidisedBed",)
 # per case: its figures (the first is its headline, whose change the metrics report) and units
 FIGURES = {
     "restingOnWall": ("rest_overlap_b", "max_speed", "late_speed"),
@@ -75,6 +81,7 @@ FIGURES = {
     "wetReboundSt27": ("e_over_edry", "e_same_gap_0.1a", "max_overlap_a", "out_gap_a"),
     "wetReboundSt152": ("e_over_edry", "e_same_gap_0.1a", "max_overlap_a", "out_gap_a"),
     "wallCellPenalty": ("peak_force",),
+    "fluidisedBed": ("eps_0.14", "eps_0.25", "eps_0.42", "max_overlap_amin"),
 }
 # figures beside the headline whose change is reported too: the rebound at separation is one
 # sample in the step where the film's force changes fastest, so its change mixes the knob's
@@ -85,7 +92,9 @@ UNITS = {"rest_overlap_b": "overlap at rest / b", "upper_rest_gap_b": "upper bod
          "e_over_edry": "e/e_dry", "e_same_gap_0.1a": "e(0.1 a)/e_dry",
          "max_overlap_a": "largest overlap / a",
          "out_gap_a": "gap of the e/e_dry sample / a",
-         "peak_force": "largest F_z magnitude / (rho_f V U 2 pi f)"}
+         "peak_force": "largest F_z magnitude / (rho_f V U 2 pi f)",
+         "eps_0.14": "voidage at U/u_t 0.14", "eps_0.25": "voidage at U/u_t 0.25",
+         "eps_0.42": "voidage at U/u_t 0.42", "max_overlap_amin": "largest overlap / a_min"}
 FIELDS = ["name", "case", "variant", "figures", "cpu_s", "host", "date", "commit"]
 B = 0.0015874          # the resting bodies' smaller semi-axis (restingOnWallCase)
 
@@ -105,7 +114,10 @@ def set_variant(props, variant):
 def prepare(case, name, variant):
     """The case folder, ready for ./Allrun; returns the properties file."""
     shutil.rmtree(case, ignore_errors=True)
-    if name.startswith("wetRebound"):
+    if name == "fluidisedBed":
+        shutil.copytree(os.path.join(TOP, "tutorials", "fluidisedBed"), case,
+                        ignore=shutil.ignore_patterns("reference"))
+    elif name.startswith("wetRebound"):
         wetRebound.write_case(case, name[len("wetRebound"):], 8)
     else:
         source = "restingOnWallCase" if name.startswith("resting") else "wallCellPenaltyCase"
@@ -127,9 +139,27 @@ def prepare(case, name, variant):
     return props
 
 
+def bed_figures(case):
+    """The stages' voidages and the largest overlap from the tutorial's results.md."""
+    import re
+    with open(os.path.join(case, "results.md")) as f:
+        text = f.read()
+    out = {}
+    for stage, eps in re.findall(r"^\| stage U/u_t = (\S+): voidage \(mean \+- sd\), bed height "
+                                 r"\| (\S+) ", text, flags=re.M):
+        out[f"eps_{stage}"] = float(eps)
+    overlap = re.search(r"largest overlap / a_min \| \S+, \S+; (\S+) \|", text)
+    if len(out) != 3 or overlap is None:
+        raise RuntimeError(f"{case}/results.md: no voidage of three stages or no overlap")
+    out["max_overlap_amin"] = float(overlap.group(1))
+    return out
+
+
 def analyse(case, name):
     import h5py
     import numpy as np
+    if name == "fluidisedBed":
+        return bed_figures(case)
     h5 = os.path.join(case, "postProcessing", "immersedBodies", "bodies.h5")
     if name.startswith("wetRebound"):
         r = wetRebound.analyse(h5, name[len("wetRebound"):])
@@ -168,7 +198,8 @@ def run(name, variant, force):
         return
     case = os.path.join(RUNS, tag)
     prepare(case, name, variant)
-    if run_logged(["./Allrun"], case, "log.Allrun") != 0:
+    script = "./Allrun-parallel" if name == "fluidisedBed" else "./Allrun"
+    if run_logged([script], case, "log.Allrun") != 0:
         sys.exit(f"stabiliserSensitivity: {tag} failed (see {case}/log.*)")
     figures = analyse(case, name)
     print(f"{tag}: " + ", ".join(f"{k} {v:.4g}" for k, v in figures.items()), flush=True)
@@ -293,7 +324,7 @@ def main():
     if a.cmd == "collect":
         collect()
         return
-    for case in a.case or CASES:
+    for case in a.case or [c for c in CASES if c not in LONG_CASES]:
         for variant in a.variant or VARIANTS:
             if case == "wallCellPenalty" and variant != "default" and \
                     VARIANTS[variant][0] != "softCellSteps":

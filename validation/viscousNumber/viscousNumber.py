@@ -75,7 +75,7 @@ taken to fall with lambda).
 run: the scans, rows appended to results/runs.csv (each test once, unless
      --force); --only restricts to the named cases.
 confirm: runs the confirmation of every row of results/runs.csv that needs
-     one and has none (rows written before the rule) and replaces the row;
+     one and has none (a row of 100 steps) and replaces the row;
      `run` then continues a scan whose verdict changed.
 plot: results/table.md, results/metrics.json (limit_<case>_<setting>: the
      largest stable lambda; first_unstable_<case>_<setting>;
@@ -589,7 +589,7 @@ def lam_of(k):
 
 
 def do_confirm(args):
-    """The confirmation of every row that needs one (rows written before the rule), each
+    """The confirmation of every row that needs one and has none, each
     replacing its row."""
     names = args.only or list(CASES)
     for r in read_csv(RUNS_CSV, missing_ok=False):

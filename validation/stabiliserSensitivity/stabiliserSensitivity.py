@@ -25,7 +25,7 @@ The cases, each the set-up of an existing test or validation, run in run/<case>-
   same_gap_restitution), the overlap and the gap of the e/e_dry sample;
 - wallCellPenalty (tests/foam/wallCellPenaltyCase, soft): a sphere driven 0.09 a into a wall
   and out; the largest hydrodynamic force after the start over rho_f V U 2 pi f;
-- fluidisedBed (tutorials/fluidisedBed, Allrun-parallel on 2 ranks, about 30 min a run; run
+- fluidisedBed (tutorials/fluidisedBed, Allrun-parallel on 2 ranks, about 20 min a run; run
   only when named with --case): the bed's voidage in its three stages of inflow and the
   largest overlap, from the tutorial's results.md.
 

@@ -132,8 +132,9 @@ K_MIN, K_MAX = -16, 44
 STEPS = 60
 SETTLING_STEPS = 100
 # a settling test unstable with its last oscillation below CONFIRM_BELOW of its
-# signal is confirmed by a run of CONFIRM_STEPS steps (the light bodies rise about
-# 1.5 D_eq in 140 steps at lambda 0.0625 and stay below the lid)
+# signal is confirmed by a run of CONFIRM_STEPS steps (a light body at lambda 0.0625
+# rises about 35 mm, 2.5 D_eq, in 140 steps from 30 mm above the floor, and stays clear
+# of the lid at 80 mm)
 CONFIRM_BELOW = 0.05
 CONFIRM_STEPS = 140
 SETTLING_CASE = os.path.join(HERE, "..", "..", "tests", "foam", "settlingSphereCase")

@@ -3,7 +3,8 @@
 the five cases of physics-references.md section 2, e/e_dry against St and the
 master curve e/e_dry = exp(-35/St) (Legendre et al.).
 
-    wetRebound.py run [--case NAME ...] [--cpd N] [--max-overlap X] [--force] [--quick]
+    wetRebound.py run [--case NAME ...] [--cpd N] [--max-overlap X] [--release-speed F]
+                      [--bounce] [--force] [--quick]
     wetRebound.py plot
     wetRebound.py collect
 
@@ -12,7 +13,10 @@ run:  each case in run/<name>/ (git-ignored), serial, nice; the body time series
       runs are skipped unless --force. --quick: the St 152 case at 6 cells/d to the
       rebound (about a minute; results/quick.csv).
 plot: results/table.md (with the quasi-steady Stokes film estimate of each run), metrics.json,
-      results/restitution.png, results/sameGap.png, results/trajectories.png.
+      results/restitution.png, results/sameGap.png, results/trajectories.png and, for the
+      --bounce runs, results/bounce.png (with Gondret's measured trajectories where their
+      digitised files are in ../shared/validation-data/gondret2002: St27_trajectory.csv,
+      St152_trajectory.csv, time from the touch [s], gap [m]).
 collect: recompute the measured columns of results/runs.csv from results/<name>.h5
       (after a change of the analysis; the run columns are kept).
 
@@ -72,23 +76,29 @@ CASES = {
     "St742": (742, 788, 920.0, 0.005, 5e-3),
 }
 
-FIELDS = ["name", "St_case", "cpd", "maxOverlap", "saturation", "virtualMass", "startShift", "releaseGap", "boxWidth", "cells", "dt", "steps", "U_release", "U_in", "U_out", "e",
+FIELDS = ["name", "St_case", "cpd", "maxOverlap", "saturation", "virtualMass", "startShift", "releaseGap", "boxWidth", "releaseSpeed", "bounce", "cells", "dt", "steps", "U_release", "U_in", "U_out", "e",
           "e_spring", "e_after_film", "top_gap_a",
           "St", "e_over_edry", "master", "max_overlap_a", "J_coll", "J_hydro", "J_gravity", "J_hydro_out", "suction", "wall_s", "cpu_s", "host", "date",
           "commit"]
 
 
 def write_case(case, name, cpd, end_factor=1.0, max_overlap=None, saturation=None,
-               virtual_mass=None, start_shift=None, release_gap=None, box_width=None):
+               virtual_mass=None, start_shift=None, release_gap=None, box_width=None,
+               release_speed=None, bounce=False):
     """The case of run `name`; start_shift: the release gap raised by that many cells (the
     sphere's position against the cells when it reaches the wall); release_gap: the gap at
     the release in d (default 2; the box is 3 d higher than it); box_width: the box's width
-    in d (default 4)."""
+    in d (default 4); release_speed: the release speed over the case's speed (default 1; the
+    sphere loses about 15 % of it while its boundary layer forms, so a faster release meets
+    the wall at the experiment's speed); bounce: the run lasts through the rebound's top and
+    the fall back to the wall (1.3 U/g' after the touch, U the case's speed, g' gravity less
+    buoyancy: the ballistic time to the top of a rebound at U, which drag shortens)."""
     st, re_, rho_f, mu, d = CASES[name]
     a = d / 2
-    u = 9 * st * mu / (RHO_P * d)
+    u_case = 9 * st * mu / (RHO_P * d)
+    u = u_case * (release_speed or 1.0)
     h = d / cpd
-    dt = 0.4 * h / u
+    dt = 0.4 * h / u_case
     gap0 = DEFAULT_RELEASE_GAP if release_gap is None else release_gap
     width = DEFAULT_BOX_WIDTH if box_width is None else box_width
     lx, lz = width * d, (gap0 + 3) * d
@@ -99,6 +109,8 @@ def write_case(case, name, cpd, end_factor=1.0, max_overlap=None, saturation=Non
     shift = (start_shift or 0.0) * h
     approach = (2.0 * d + shift) / u if release_gap is None else (gap0 * d + shift) / (0.85 * u)
     end = end_factor * (approach + 40 * dt + (0.6 + 0.6 * (st > 500)) * d / u)
+    if bounce:
+        end = approach + 1.3 * u_case / (9.81 * (1 - rho_f / RHO_P))
     shutil.rmtree(case, ignore_errors=True)
     shutil.copytree(os.path.join(HERE, "caseTemplate"), case)
     mm = 1e3
@@ -136,6 +148,18 @@ def write_case(case, name, cpd, end_factor=1.0, max_overlap=None, saturation=Non
     return dict(dt=dt, cells=nx * nx * nz, U_release=u, end=end)
 
 
+def first_bounce_end(gap):
+    """The row of the second touch of the wall (the gap negative again after it was
+    non-negative following the first touch), or the series' length."""
+    below = np.flatnonzero(gap < 0)
+    if len(below):
+        out = below[0] + np.flatnonzero(gap[below[0]:] >= 0)
+        again = out[0] + np.flatnonzero(gap[out[0]:] < 0) if len(out) else []
+        if len(again):
+            return int(again[0])
+    return len(gap)
+
+
 def analyse(h5, name):
     import h5py
     st, re_, rho_f, mu, d = CASES[name]
@@ -157,13 +181,9 @@ def analyse(h5, name):
     u_in = -w[i0 - 1]
     gap = z - a
     # the first bounce only: the series ends before a second touch of the wall
-    below = np.flatnonzero(gap < 0)
-    if len(below):
-        out = below[0] + np.flatnonzero(gap[below[0]:] >= 0)
-        again = out[0] + np.flatnonzero(gap[out[0]:] < 0) if len(out) else []
-        if len(again):
-            t, z, w, fc, fh, gap = (x[:again[0]] for x in (t, z, w, fc, fh, gap))
-            touched = touched[touched < again[0]]
+    end = first_bounce_end(gap)
+    t, z, w, fc, fh, gap = (x[:end] for x in (t, z, w, fc, fh, gap))
+    touched = touched[touched < end]
     # the largest rebound speed once the sphere has left the wall (gap >= 0
     # again after the contact: the film's resistance to the separation
     # included); the largest speed at any time after the touch, reached at
@@ -227,6 +247,8 @@ def same_gap_restitution(h5, name, gaps=SAME_GAPS):
     with h5py.File(h5, "r", locking=False) as f:
         gap = f["centre"][:, 0, 2] / a - 1.0
         w = f["velocity"][:, 0, 2]
+    end = first_bounce_end(gap)
+    gap, w = gap[:end], w[:end]
     deepest = int(np.argmin(gap))
     gap_in, w_in = gap[:deepest][::-1], w[:deepest][::-1]
     top = deepest + int(np.argmax(gap[deepest:]))
@@ -249,9 +271,15 @@ def default_geometry(r):
             and (r.get("boxWidth") or f"{DEFAULT_BOX_WIDTH:g}") == f"{DEFAULT_BOX_WIDTH:g}")
 
 
+def standard_release(r):
+    """True for a run released at the case's speed and stopped after the rebound's largest
+    speed (not a trajectory run of --release-speed or --bounce)."""
+    return (r.get("releaseSpeed") or "1") == "1" and (r.get("bounce") or "0") == "0"
+
+
 def default_position(r):
     """True for a run released from the default position in the validation's box."""
-    return r["startShift"] == "0" and default_geometry(r)
+    return r["startShift"] == "0" and default_geometry(r) and standard_release(r)
 
 
 def same_gap_rows(rows, variants=False):
@@ -297,14 +325,16 @@ def measured(r):
 
 
 def run_one(name, cpd, force, quick, max_overlap=None, saturation=None, virtual_mass=None,
-            start_shift=None, release_gap=None, box_width=None):
+            start_shift=None, release_gap=None, box_width=None, release_speed=None, bounce=False):
     out_csv = os.path.join(RESULTS, "quick.csv") if quick else RUNS_CSV
     tag = (f"{name}-c{cpd}" + (f"-ov{max_overlap:g}" if max_overlap is not None else "")
            + (f"-sat{saturation:g}" if saturation is not None else "")
            + (f"-cv{virtual_mass:g}" if virtual_mass is not None else "")
            + (f"-sh{start_shift:g}" if start_shift is not None else "")
            + (f"-rg{release_gap:g}" if release_gap is not None else "")
-           + (f"-w{box_width:g}" if box_width is not None else ""))
+           + (f"-w{box_width:g}" if box_width is not None else "")
+           + (f"-rs{release_speed:g}" if release_speed is not None else "")
+           + ("-bounce" if bounce else ""))
     rows = read_csv(out_csv)
     if not force and not quick and any(r["name"] == tag for r in rows):
         print(f"{tag}: in {os.path.relpath(out_csv, HERE)}, skipped")
@@ -312,7 +342,8 @@ def run_one(name, cpd, force, quick, max_overlap=None, saturation=None, virtual_
     case = os.path.join(HERE, "run", tag)
     info = write_case(case, name, cpd, max_overlap=max_overlap, saturation=saturation,
                       virtual_mass=virtual_mass, start_shift=start_shift,
-                      release_gap=release_gap, box_width=box_width)
+                      release_gap=release_gap, box_width=box_width,
+                      release_speed=release_speed, bounce=bounce)
     print(f"{tag}: {info['cells']} cells, dt {info['dt']:.3g} s, end {info['end']:.3g} s", flush=True)
     start = time.time()
     rc = run_logged(["nice", "-n", "5", "./Allrun"], case, "log.Allrun")
@@ -331,6 +362,7 @@ def run_one(name, cpd, force, quick, max_overlap=None, saturation=None, virtual_
                startShift=f"{start_shift or 0:g}",
                releaseGap=f"{release_gap if release_gap is not None else DEFAULT_RELEASE_GAP:g}",
                boxWidth=f"{box_width if box_width is not None else DEFAULT_BOX_WIDTH:g}",
+               releaseSpeed=f"{release_speed or 1:g}", bounce="1" if bounce else "0",
                cells=info["cells"],
                dt=f"{info['dt']:.6g}", steps=len(r["t"]) - 1, U_release=f"{info['U_release']:.5g}",
                wall_s=round(wall), cpu_s=round(cpu) if math.isfinite(cpu) else "",
@@ -399,7 +431,8 @@ def write_metrics(rows):
     # against the same case in the validation's set-up
     for r in rows:
         b = [x for x in default if x["St_case"] == r["St_case"] and x["cpd"] == r["cpd"]]
-        if default_geometry(r) or not b or (r["maxOverlap"], r["saturation"], r["virtualMass"],
+        if default_geometry(r) or not standard_release(r) or not b or (
+                r["maxOverlap"], r["saturation"], r["virtualMass"],
                                             r["startShift"]) != ("0.1", "0.001", "0.5", "0"):
             continue
         key = f"release_gap_{r['releaseGap']}_box_{r['boxWidth']}_St{r['St_case']}_{r['cpd']}"
@@ -412,6 +445,7 @@ def write_metrics(rows):
         for k, h in enumerate(SAME_GAPS):
             metrics[f"max_abs_deviation_same_gap_{h:g}_{cpd}"] = round(
                 max(abs(values[k] - float(r["master"])) for r, values in sel), 4)
+    bounce_metrics(rows, metrics)
     with open(os.path.join(RESULTS, "metrics.json"), "w") as f:
         json.dump(metrics, f, indent=1, sort_keys=True)
         f.write("\n")
@@ -424,7 +458,7 @@ def start_groups(rows):
     groups = {}
     for r in rows:
         if (r["maxOverlap"] == "0.1" and r["saturation"] == "0.001" and r["virtualMass"] == "0.5"
-                and default_geometry(r)):
+                and default_geometry(r) and standard_release(r)):
             groups.setdefault((r["St_case"], int(r["cpd"])), []).append(r)
     return {k: sorted(v, key=lambda r: float(r["startShift"])) for k, v in groups.items()
             if len(v) > 1}
@@ -474,7 +508,7 @@ def start_table(rows):
 def geometry_table(rows):
     """Markdown: the runs released from another gap or in a wider box (the default settings
     otherwise) beside the same case in the validation's set-up."""
-    other = [r for r in rows if not default_geometry(r)]
+    other = [r for r in rows if not default_geometry(r) and standard_release(r)]
     if not other:
         return []
     base = {(r["St_case"], r["cpd"]): r for r in rows
@@ -519,6 +553,156 @@ def film_estimate(st, cpd, saturation):
     lam = np.array([brenner(x) for x in eps])
     loss = float(np.sum(0.5 * (lam[1:] + lam[:-1] - 2) * np.diff(eps))) / st
     return (E_DRY * (1 - loss) - loss) / E_DRY
+
+
+# Gondret et al.'s measured rebound trajectories, digitised (two columns, no header: time in s
+# from the touch, gap between the sphere and the plate in m), looked for in
+# ../shared/validation-data/gondret2002 (or $GONDRET_DATA)
+GONDRET_DATA = os.environ.get("GONDRET_DATA", os.path.join(HERE, "..", "..", "..", "shared",
+                                                            "validation-data", "gondret2002"))
+GONDRET_TRAJECTORY = {"St27": "St27_trajectory.csv", "St152": "St152_trajectory.csv"}
+
+
+def measured_trajectory(name):
+    """(t, gap) of Gondret's trajectory of case `name` in s and m, or None where the
+    digitised file is not there."""
+    path = os.path.join(GONDRET_DATA, GONDRET_TRAJECTORY.get(name, ""))
+    if name not in GONDRET_TRAJECTORY or not os.path.isfile(path):
+        return None
+    data = np.loadtxt(path, delimiter=",", ndmin=2)
+    if data.shape[1] != 2 or len(data) < 3 or not np.all(np.isfinite(data)):
+        sys.exit(f"wetRebound: {path}: expected two finite columns (t [s], gap [m]), "
+                 f"at least three rows")
+    return data[:, 0], data[:, 1]
+
+
+def bounce_analysis(h5, name):
+    """The whole first bounce of a --bounce run: the touch and separation times (linear
+    between the samples where the gap changes sign), the contact's duration and depth, the
+    rebound's top (gap over a, time from the touch) and the series against the time from the
+    touch; with Gondret's trajectory of the case (measured_trajectory), the rms and mean of
+    our speed minus his (his speeds the differences of consecutive samples, compared at their
+    mid-times from 2 ms after the touch on, where his sphere has left the wall) and his top."""
+    import h5py
+    a = CASES[name][4] / 2
+    with h5py.File(h5, "r", locking=False) as f:
+        t = f["time"][()]
+        gap = f["centre"][:, 0, 2] - a
+        w = f["velocity"][:, 0, 2]
+    below = np.flatnonzero(gap < 0)
+    if len(below) == 0 or below[0] == 0:
+        raise RuntimeError(f"{name}: no touch of the wall after an approach")
+    i = below[0]
+    t_touch = t[i - 1] + (t[i] - t[i - 1]) * gap[i - 1] / (gap[i - 1] - gap[i])
+    left = i + np.flatnonzero(gap[i:] >= 0)
+    if len(left) == 0:
+        raise RuntimeError(f"{name}: the sphere does not leave the wall")
+    o = left[0]
+    t_sep = t[o - 1] + (t[o] - t[o - 1]) * gap[o - 1] / (gap[o - 1] - gap[o])
+    top = o + int(np.argmax(gap[o:]))
+    # the approach speed 1.5 a from the wall, before the wall slows the sphere much
+    approach = -float(np.interp(1.5 * a, gap[:i][::-1], w[:i][::-1]))
+    out = dict(t=t - t_touch, gap_a=gap / a, w=w, contact_ms=(t_sep - t_touch) * 1e3,
+               approach=approach,
+               depth_a=-gap[i:o].min() / a, top_a=gap[top] / a, top_ms=(t[top] - t_touch) * 1e3,
+               falls_back=bool(np.any(gap[top:] < 0)))
+    ref = measured_trajectory(name)
+    if ref is not None:
+        tr, gr = ref
+        after = np.flatnonzero(tr > 0)
+        if len(after) == 0:
+            sys.exit(f"wetRebound: Gondret's {name} trajectory has no sample after the touch (t > 0)")
+        k = after[0] + int(np.argmax(gr[after]))
+        mid = 0.5 * (tr[1:] + tr[:-1])
+        speed = np.diff(gr) / np.diff(tr)
+        sel = (mid > 2e-3) & (mid < out["t"][-1])
+        diff = np.interp(mid[sel], out["t"], w) - speed[sel]
+        out.update(ref_t=tr, ref_gap_a=gr / a, ref_top_a=gr[k] / a, ref_top_ms=tr[k] * 1e3,
+                   rms_speed=float(np.sqrt(np.mean(diff ** 2))), mean_speed=float(np.mean(diff)))
+    return out
+
+
+def bounce_rows(rows):
+    """The --bounce runs, by case, resolution, box width and overlap cap."""
+    return sorted((r for r in rows if (r.get("bounce") or "0") == "1"),
+                  key=lambda r: (float(r["St_case"]), int(r["cpd"]), float(r["boxWidth"]),
+                                 -float(r["maxOverlap"])))
+
+
+def bounce_table(rows):
+    """Markdown: the --bounce runs' whole first bounce (bounce_analysis)."""
+    sel = bounce_rows(rows)
+    if not sel:
+        return []
+    lines = ["Whole first bounce (`--bounce`, released at `--release-speed` times the case's "
+             "speed so that it meets the wall at about the experiment's speed): contact and "
+             "top of the rebound, times from the touch; with Gondret's trajectory where its "
+             "digitised file is in `" + os.path.relpath(GONDRET_DATA, HERE) + "`:", "",
+             "| case | cells/d | box width/d | maxOverlap | release speed | approach at 1.5 a "
+             "[m/s] | the case's speed [m/s] | U_in [m/s] | St | "
+             "e/e_dry | contact [ms] | depth/a | top/a | top at [ms] | Gondret's top/a | "
+             "at [ms] | speed rms (mean) difference [m/s] |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in sel:
+        name = r["name"].split("-c")[0]
+        b = bounce_analysis(os.path.join(RESULTS, f"{r['name']}.h5"), name)
+        ref = (f"{b['ref_top_a']:.3f} | {b['ref_top_ms']:.1f} | "
+               f"{b['rms_speed']:.3f} ({b['mean_speed']:+.3f})" if "ref_top_a" in b else "- | - | -")
+        lines.append(f"| St {r['St_case']} | {r['cpd']} | {r['boxWidth']} | {r['maxOverlap']} | "
+                     f"{r['releaseSpeed']} | {b['approach']:.3f} | "
+                     f"{float(r['U_release']) / float(r['releaseSpeed']):.3f} | "
+                     f"{float(r['U_in']):.3f} | {float(r['St']):.0f} | "
+                     f"{float(r['e_over_edry']):.3f} | {b['contact_ms']:.2f} | {b['depth_a']:.3f} | "
+                     f"{b['top_a']:.3f} | {b['top_ms']:.1f} | {ref} |")
+    return lines
+
+
+def bounce_metrics(rows, metrics):
+    """bounce_top_a_<case>_<cpd>_ov<maxOverlap> and bounce_contact_ms_... of every --bounce
+    run; with Gondret's trajectory, bounce_top_ratio_... (our top over his) and
+    bounce_rms_speed_...[m/s]."""
+    for r in bounce_rows(rows):
+        name = r["name"].split("-c")[0]
+        b = bounce_analysis(os.path.join(RESULTS, f"{r['name']}.h5"), name)
+        key = (f"{name}_{r['cpd']}_ov{r['maxOverlap']}"
+               + (f"_box{r['boxWidth']}" if r["boxWidth"] != f"{DEFAULT_BOX_WIDTH:g}" else ""))
+        metrics[f"bounce_top_a_{key}"] = round(b["top_a"], 4)
+        metrics[f"bounce_contact_ms_{key}"] = round(b["contact_ms"], 3)
+        if "ref_top_a" in b:
+            metrics[f"bounce_top_ratio_{key}"] = round(b["top_a"] / b["ref_top_a"], 4)
+            metrics[f"bounce_rms_speed_{key}"] = round(b["rms_speed"], 4)
+
+
+def plot_bounces(rows, plt):
+    """results/bounce.png: gap over a against the time from the touch, one panel a case."""
+    sel = bounce_rows(rows)
+    names = sorted({r["name"].split("-c")[0] for r in sel}, key=lambda n: CASES[n][0])
+    if not names:
+        return
+    fig, axes = plt.subplots(1, len(names), figsize=(6 * len(names), 4.2), squeeze=False)
+    for ax, name in zip(axes[0], names):
+        ref = None
+        high = 0.0
+        for k, r in enumerate(x for x in sel if x["name"].startswith(name + "-")):
+            b = bounce_analysis(os.path.join(RESULTS, f"{r['name']}.h5"), name)
+            high = max(high, b["top_a"], b.get("ref_top_a", 0.0))
+            box = f", box {r['boxWidth']} d" if r["boxWidth"] != f"{DEFAULT_BOX_WIDTH:g}" else ""
+            ax.plot(b["t"] * 1e3, b["gap_a"], "-", color=f"C{k}",
+                    label=f"{r['cpd']} cells/d, maxOverlap {r['maxOverlap']}{box} "
+                          f"(St {float(r['St']):.0f})")
+            ref = ref or ("ref_t" in b and (b["ref_t"], b["ref_gap_a"]))
+        if ref:
+            ax.plot(ref[0] * 1e3, ref[1], "ko", mfc="none", label="Gondret et al. 2002 (measured)")
+        ax.axhline(0, color="k", lw=0.5)
+        ax.set_xlim(left=-5)
+        ax.set_ylim(-0.1 * high, 1.25 * high)
+        ax.set_xlabel("time from the touch [ms]")
+        ax.set_ylabel("gap / a")
+        ax.set_title(f"{name}: whole first bounce", fontsize=10)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(RESULTS, "bounce.png"), dpi=120)
 
 
 def film_table(rows):
@@ -578,6 +762,8 @@ def do_plot():
     lines += [""] + start if start else []
     geometry = geometry_table(rows)
     lines += [""] + geometry if geometry else []
+    bounce = bounce_table(rows)
+    lines += [""] + bounce if bounce else []
     with open(os.path.join(RESULTS, "table.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
@@ -654,6 +840,7 @@ def do_plot():
     ax.grid(True, alpha=0.3)
     fig.tight_layout()
     fig.savefig(os.path.join(RESULTS, "trajectories.png"), dpi=120)
+    plot_bounces(rows, plt)
 
 
 def do_collect():
@@ -685,6 +872,10 @@ def main():
                    help="gap at the release in d (default 2; the box is 3 d higher); its own rows")
     r.add_argument("--box-width", type=float, default=None,
                    help="the box's width in d (default 4); its own rows")
+    r.add_argument("--release-speed", type=float, default=None,
+                   help="release speed over the case's speed (default 1); its own rows")
+    r.add_argument("--bounce", action="store_true",
+                   help="run through the rebound's top and back to the wall; its own rows")
     r.add_argument("--force", action="store_true")
     r.add_argument("--quick", action="store_true")
     sp.add_parser("plot")
@@ -711,6 +902,10 @@ def main():
         sys.exit(f"wetRebound: --release-gap {args.release_gap}: allowed [1, 20] d")
     if args.box_width is not None and not 3 <= args.box_width <= 12:
         sys.exit(f"wetRebound: --box-width {args.box_width}: allowed [3, 12] d")
+    if args.release_speed is not None and not 0.5 <= args.release_speed <= 2:
+        sys.exit(f"wetRebound: --release-speed {args.release_speed}: allowed [0.5, 2]")
+    if args.release_speed == 1:
+        args.release_speed = None
     # the default set-up given explicitly is the default set-up (its rows, not new ones)
     if args.release_gap == DEFAULT_RELEASE_GAP:
         args.release_gap = None
@@ -721,7 +916,8 @@ def main():
         return
     for name in (args.case or sorted(CASES, key=lambda n: CASES[n][0])):
         run_one(name, args.cpd, args.force, False, args.max_overlap, args.saturation,
-                args.virtual_mass, args.start_shift, args.release_gap, args.box_width)
+                args.virtual_mass, args.start_shift, args.release_gap, args.box_width,
+                args.release_speed, args.bounce)
 
 
 if __name__ == "__main__":

@@ -54,10 +54,10 @@ def with_second_touch(t, gap, w, fc):
     """The series continued through a second touch of the wall (the fall as in trajectory(),
     no collision force above the wall), after which the sphere leaves faster than from the
     first (a second bounce the analysis must not read)."""
-    extra = np.arange(1, 400) * DT
+    extra = np.arange(1, 800) * DT
     g2 = gap[-1] + w[-1] * extra - 0.5 * DECEL * extra ** 2
     w2 = w[-1] - DECEL * extra
-    k = int(np.flatnonzero(g2 < -0.02 * A)[0])
+    k = int(np.flatnonzero(g2 < -0.3 * A)[0])  # deeper than the first contact (0.21 a)
     up = np.arange(1, 60) * DT
     t = np.concatenate([t, t[-1] + extra[:k + 1], t[-1] + extra[k] + up])
     gap = np.concatenate([gap, g2[:k + 1], g2[k] + 2 * U_OUT * up])
@@ -139,6 +139,63 @@ class WetReboundAnalysisSecondTouch(unittest.TestCase):
                     "J_coll", "J_hydro", "J_gravity"):
             self.assertAlmostEqual(a[key], b[key], places=12, msg=key)
         self.assertAlmostEqual(b["e"], U_OUT / U_IN, delta=2 * DECEL * DT)
+        # and the speeds at a common gap of the first bounce (not of the second touch's
+        # deeper overlap)
+        gaps = (0.05, 0.1, 0.2)
+        self.assertEqual(wr.same_gap_restitution(one, NAME, gaps=gaps),
+                         wr.same_gap_restitution(two, NAME, gaps=gaps))
+
+
+class WetReboundWholeBounce(unittest.TestCase):
+    """bounce_analysis: the contact, the rebound's top and the comparison with a measured
+    trajectory (a file in the format of Gondret's digitised trajectories)."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.dir = tempfile.mkdtemp(dir=os.environ.get("TMPDIR"))
+        cls.h5 = os.path.join(cls.dir, "bounce.h5")
+        write_h5(cls.h5)
+        cls.saved = wr.GONDRET_DATA
+
+    @classmethod
+    def tearDownClass(cls):
+        wr.GONDRET_DATA = cls.saved
+
+    def reference(self, scale):
+        """A measured trajectory: the synthetic bounce sampled every 2 ms from the touch, its
+        gaps times `scale`, in a directory of its own."""
+        d = tempfile.mkdtemp(dir=self.dir)
+        t, gap, _, _ = trajectory()
+        t_touch = 1.5 * A / U_IN
+        ts = np.arange(0.0, t[-1] - t_touch, 2e-3)
+        np.savetxt(os.path.join(d, wr.GONDRET_TRAJECTORY[NAME]),
+                   np.column_stack([ts, scale * np.interp(ts + t_touch, t, gap)]), delimiter=",")
+        return d
+
+    def test_contact_and_top(self):
+        wr.GONDRET_DATA = tempfile.mkdtemp(dir=self.dir)    # no measured trajectory there
+        b = wr.bounce_analysis(self.h5, NAME)
+        self.assertAlmostEqual(b["contact_ms"], CONTACT * 1e3, delta=2e-3)
+        self.assertAlmostEqual(b["depth_a"], CONTACT / math.pi * U_IN / A, delta=1e-4)
+        self.assertAlmostEqual(b["top_a"], TOP, delta=1e-4)
+        self.assertAlmostEqual(b["top_ms"], (CONTACT + U_OUT / DECEL) * 1e3, delta=DT * 1e3)
+        self.assertFalse(b["falls_back"])
+        self.assertNotIn("rms_speed", b)
+
+    def test_against_a_measured_trajectory(self):
+        # the same bounce measured: no speed difference, the same top
+        wr.GONDRET_DATA = self.reference(1.0)
+        b = wr.bounce_analysis(self.h5, NAME)
+        self.assertLess(b["rms_speed"], 1e-9)
+        # its top is its highest sample: at 4 ms from the touch, 0.5 ms past the top
+        late = 4e-3 - CONTACT - U_OUT / DECEL
+        self.assertAlmostEqual(b["ref_top_a"], TOP - 0.5 * DECEL * late ** 2 / A, delta=1e-9)
+        # a rebound measured 20 % higher (every gap): its speeds are 20 % higher
+        wr.GONDRET_DATA = self.reference(1.2)
+        c = wr.bounce_analysis(self.h5, NAME)
+        self.assertLess(c["mean_speed"], -0.01)
+        self.assertGreater(c["rms_speed"], 0.01)
+        self.assertAlmostEqual(c["ref_top_a"] / b["ref_top_a"], 1.2, places=9)
 
 
 class WetReboundAnalysisWithoutApproach(unittest.TestCase):

@@ -622,6 +622,93 @@ def bounce_analysis(h5, name):
     return out
 
 
+def quasi_steady_bounce(a, rho_f, mu, u0, h0=1.5, saturation=1e-3, cv=0.5, g=9.81,
+                        finite_re=True):
+    """A sphere (radius a, density RHO_P) in a fluid of density rho_f and viscosity mu,
+    starting h0 radii above the wall at the speed u0 towards it, under quasi-steady forces
+    only: Brenner's exact resistance lambda(h/a) (frozen below the saturation gap) times
+    Stokes' drag, plus Schiller and Naumann's finite-Re excess 0.15 Re^0.687 where finite_re,
+    and the weight less buoyancy, on the mass with cv times the displaced fluid's; the touch
+    reverses it instantly with e_dry. No unsteady fluid force, no contact time: the bounce
+    that the film law and the steady drag give alone. Returns the top (over a), its time from
+    the touch [ms], the speed at the touch, and the series (time from the touch, gap/a, speed
+    positive upwards) from the touch to the landing or to 1 s."""
+    volume = 4 / 3 * math.pi * a ** 3
+    mass = RHO_P * volume + cv * rho_f * volume
+    weight = (RHO_P - rho_f) * volume * g
+    # lambda tabulated from the saturation gap to 1000 a (where it is 1.0011; 1 beyond)
+    eps = np.logspace(math.log10(saturation), 3.0, 400)
+    lam = np.array([brenner(x) for x in eps])
+    stokes = 6 * math.pi * mu * a
+
+    def resistance(h):
+        """The drag coefficient c of F = -c u at the gap h (m)."""
+        x = max(h / a, saturation)
+        if x >= eps[-1]:
+            return stokes
+        return stokes * float(np.exp(np.interp(math.log(x), np.log(eps), np.log(lam))))
+
+    h, u, t = h0 * a, -u0, 0.0
+    base = min(1e-3 * a / max(u0, 1e-9), 0.05 * mass / (stokes * lam[0]) if mu > 0 else 1.0)
+    t_touch, u_touch, series = None, None, []
+    while t < 1.0:
+        # a step that moves the sphere by at most 2 % of its gap (of the saturation gap below
+        # it), so that the film's logarithm is integrated down to the touch
+        dt = min(base, 0.02 * max(h, saturation * a) / max(abs(u), 1e-12))
+        c = resistance(h)
+        if finite_re and mu > 0:
+            c += stokes * 0.15 * (rho_f * abs(u) * 2 * a / mu) ** 0.687
+        # the drag implicit, the weight explicit
+        u = (mass * u - weight * dt) / (mass + c * dt)
+        t += dt
+        if t_touch is None and h + u * dt <= 0:
+            t_touch, u_touch = t, -u
+            h, u = 0.0, -E_DRY * u
+            series.append((0.0, 0.0, u))
+            continue
+        h += u * dt
+        if t_touch is not None:
+            series.append((t - t_touch, h / a, u))
+            if h <= 0:
+                break
+    if t_touch is None:
+        raise RuntimeError(f"quasi_steady_bounce: no touch within 1 s (u0 {u0} m/s)")
+    data = np.array(series)
+    k = int(np.argmax(data[:, 1]))
+    return dict(top_a=float(data[k, 1]), top_ms=float(data[k, 0]) * 1e3, u_touch=u_touch,
+                t=data[:, 0], gap_a=data[:, 1], u=data[:, 2])
+
+
+def way_out_force_ratio(h5, name, gaps=(0.1, 0.4)):
+    """The force the run's sphere feels on its way out between the gaps (over a), collision
+    (film correction) plus resolved, over the quasi-steady one at its gap and speed
+    (quasi_steady_bounce's drag, weight excluded); the mean over the samples there."""
+    import h5py
+    st, re_, rho_f, mu, d = CASES[name]
+    a = d / 2
+    with h5py.File(h5, "r", locking=False) as f:
+        gap = f["centre"][:, 0, 2] / a - 1.0
+        w = f["velocity"][:, 0, 2]
+        fc = f["collisionForce"][:, 0, 2]
+        fh = f["hydroForce"][:, 0, 2]
+    end = first_bounce_end(gap)
+    below = np.flatnonzero(gap[:end] < 0)
+    if len(below) == 0:
+        return float("nan")
+    o = below[0] + np.flatnonzero(gap[below[0]:end] >= 0)
+    if len(o) == 0:
+        return float("nan")
+    rows = [k for k in range(o[0], end) if w[k] > 0 and gaps[0] <= gap[k] <= gaps[1]]
+    if not rows:
+        return float("nan")
+    stokes = 6 * math.pi * mu * a
+    ratios = []
+    for k in rows:
+        c = stokes * (brenner(gap[k]) + 0.15 * (rho_f * w[k] * d / mu) ** 0.687)
+        ratios.append((fc[k] + fh[k]) / (-c * w[k]))
+    return float(np.mean(ratios))
+
+
 def bounce_rows(rows):
     """The --bounce runs, by case, resolution, box width and overlap cap."""
     return sorted((r for r in rows if (r.get("bounce") or "0") == "1"),
@@ -636,16 +723,25 @@ def bounce_table(rows):
         return []
     lines = ["Whole first bounce (`--bounce`, released at `--release-speed` times the case's "
              "speed so that it meets the wall at about the experiment's speed): contact and "
-             "top of the rebound, times from the touch; with Gondret's trajectory where its "
-             "digitised file is in `" + os.path.relpath(GONDRET_DATA, HERE) + "`:", "",
+             "top of the rebound, times from the touch; the quasi-steady bounce from the same "
+             "approach speed 1.5 a from the wall (`quasi_steady_bounce`: Brenner's film, "
+             "steady drag, weight, an instant bounce); the mean force on the way out from 0.1 "
+             "to 0.4 a over the quasi-steady one (`way_out_force_ratio`); with Gondret's "
+             "trajectory where its digitised file is in `" + os.path.relpath(GONDRET_DATA, HERE)
+             + "`:", "",
              "| case | cells/d | box width/d | maxOverlap | release speed | approach at 1.5 a "
              "[m/s] | the case's speed [m/s] | U_in [m/s] | St | "
-             "e/e_dry | contact [ms] | depth/a | top/a | top at [ms] | Gondret's top/a | "
+             "e/e_dry | contact [ms] | depth/a | top/a | top at [ms] | quasi-steady top/a | "
+             "at [ms] | way-out force over the quasi-steady | Gondret's top/a | "
              "at [ms] | speed rms (mean) difference [m/s] |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in sel:
         name = r["name"].split("-c")[0]
         b = bounce_analysis(os.path.join(RESULTS, f"{r['name']}.h5"), name)
+        st, re_, rho_f, mu, d = CASES[name]
+        q = quasi_steady_bounce(d / 2, rho_f, mu, b["approach"], saturation=float(r["saturation"]),
+                                cv=float(r["virtualMass"]))
+        ratio = way_out_force_ratio(os.path.join(RESULTS, f"{r['name']}.h5"), name)
         ref = (f"{b['ref_top_a']:.3f} | {b['ref_top_ms']:.1f} | "
                f"{b['rms_speed']:.3f} ({b['mean_speed']:+.3f})" if "ref_top_a" in b else "- | - | -")
         lines.append(f"| St {r['St_case']} | {r['cpd']} | {r['boxWidth']} | {r['maxOverlap']} | "
@@ -653,7 +749,8 @@ def bounce_table(rows):
                      f"{float(r['U_release']) / float(r['releaseSpeed']):.3f} | "
                      f"{float(r['U_in']):.3f} | {float(r['St']):.0f} | "
                      f"{float(r['e_over_edry']):.3f} | {b['contact_ms']:.2f} | {b['depth_a']:.3f} | "
-                     f"{b['top_a']:.3f} | {b['top_ms']:.1f} | {ref} |")
+                     f"{b['top_a']:.3f} | {b['top_ms']:.1f} | {q['top_a']:.3f} | "
+                     f"{q['top_ms']:.1f} | {ratio:.2f} | {ref} |")
     return lines
 
 

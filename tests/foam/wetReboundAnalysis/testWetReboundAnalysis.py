@@ -198,6 +198,36 @@ class WetReboundWholeBounce(unittest.TestCase):
         self.assertAlmostEqual(c["ref_top_a"] / b["ref_top_a"], 1.2, places=9)
 
 
+class QuasiSteadyBounce(unittest.TestCase):
+    """quasi_steady_bounce against the closed forms of its two limits."""
+
+    def test_in_vacuum_it_is_a_ballistic_bounce(self):
+        a, u0, h0, g = 1.5e-3, 0.4, 2.0, 9.81
+        b = wr.quasi_steady_bounce(a, 0.0, 0.0, u0, h0=h0, g=g)
+        u_touch = math.sqrt(u0 ** 2 + 2 * g * h0 * a)
+        self.assertAlmostEqual(b["u_touch"], u_touch, delta=1e-4 * u_touch)
+        top = (wr.E_DRY * u_touch) ** 2 / (2 * g) / a
+        self.assertAlmostEqual(b["top_a"], top, delta=1e-3 * top)
+
+    def test_without_weight_and_inertia_of_the_fluid_the_film_takes_its_integral(self):
+        # Stokes drag times Brenner's lambda only (no buoyancy, no added mass, Re = 0, g = 0):
+        # m du = -6 pi mu a lambda(h/a) dh on the way in and out, lambda frozen below the
+        # saturation gap
+        a, mu, u0, h0, sat = 3e-3, 0.1, 0.5, 1.5, 1e-3
+        b = wr.quasi_steady_bounce(a, 0.0, mu, u0, h0=h0, saturation=sat, g=0.0)
+        mass = wr.RHO_P * 4 / 3 * math.pi * a ** 3
+        x = np.logspace(math.log10(sat), 3.0, 4000)      # (the model tabulates to 1000 a)
+        lam = np.array([wr.brenner(v) for v in x])
+        # the integral of lambda over h/a from 0, cumulative
+        cumulative = lam[0] * sat + np.concatenate(
+            [[0.0], np.cumsum(0.5 * (lam[1:] + lam[:-1]) * np.diff(x))])
+        k = 6 * math.pi * mu * a * a / mass
+        u_touch = u0 - k * float(np.interp(h0, x, cumulative))
+        self.assertAlmostEqual(b["u_touch"], u_touch, delta=5e-3 * u_touch)
+        top = float(np.interp(wr.E_DRY * u_touch / k, cumulative, x))
+        self.assertAlmostEqual(b["top_a"], top, delta=3e-3 * top)
+
+
 class WetReboundAnalysisWithoutApproach(unittest.TestCase):
     def test_a_series_starting_in_the_film_stops(self):
         # the approach speed is the sample before the first collision force: a series that

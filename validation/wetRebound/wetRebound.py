@@ -679,9 +679,10 @@ def quasi_steady_bounce(a, rho_f, mu, u0, h0=1.5, saturation=1e-3, cv=0.5, g=9.8
                 t=data[:, 0], gap_a=data[:, 1], u=data[:, 2])
 
 
-def way_out_force_ratio(h5, name, gaps=(0.1, 0.4)):
-    """The force the run's sphere feels on its way out between the gaps (over a), collision
-    (film correction) plus resolved, over the quasi-steady one at its gap and speed
+def force_ratio(h5, name, way, gaps=(0.1, 0.4)):
+    """The force the run's sphere feels between the gaps (over a) on its way in (way "in",
+    before the first touch) or out (way "out", after it leaves the wall, moving up),
+    collision (film correction) plus resolved, over the quasi-steady one at its gap and speed
     (quasi_steady_bounce's drag, weight excluded); the mean over the samples there."""
     import h5py
     st, re_, rho_f, mu, d = CASES[name]
@@ -695,16 +696,19 @@ def way_out_force_ratio(h5, name, gaps=(0.1, 0.4)):
     below = np.flatnonzero(gap[:end] < 0)
     if len(below) == 0:
         return float("nan")
-    o = below[0] + np.flatnonzero(gap[below[0]:end] >= 0)
-    if len(o) == 0:
-        return float("nan")
-    rows = [k for k in range(o[0], end) if w[k] > 0 and gaps[0] <= gap[k] <= gaps[1]]
+    if way == "in":
+        rows = [k for k in range(below[0]) if w[k] < 0 and gaps[0] <= gap[k] <= gaps[1]]
+    else:
+        o = below[0] + np.flatnonzero(gap[below[0]:end] >= 0)
+        if len(o) == 0:
+            return float("nan")
+        rows = [k for k in range(o[0], end) if w[k] > 0 and gaps[0] <= gap[k] <= gaps[1]]
     if not rows:
         return float("nan")
     stokes = 6 * math.pi * mu * a
     ratios = []
     for k in rows:
-        c = stokes * (brenner(gap[k]) + 0.15 * (rho_f * w[k] * d / mu) ** 0.687)
+        c = stokes * (brenner(gap[k]) + 0.15 * (rho_f * abs(w[k]) * d / mu) ** 0.687)
         ratios.append((fc[k] + fh[k]) / (-c * w[k]))
     return float(np.mean(ratios))
 
@@ -725,23 +729,24 @@ def bounce_table(rows):
              "speed so that it meets the wall at about the experiment's speed): contact and "
              "top of the rebound, times from the touch; the quasi-steady bounce from the same "
              "approach speed 1.5 a from the wall (`quasi_steady_bounce`: Brenner's film, "
-             "steady drag, weight, an instant bounce); the mean force on the way out from 0.1 "
-             "to 0.4 a over the quasi-steady one (`way_out_force_ratio`); with Gondret's "
+             "steady drag, weight, an instant bounce); the mean force between 0.1 and 0.4 a "
+             "on the way in and out over the quasi-steady one (`force_ratio`); with Gondret's "
              "trajectory where its digitised file is in `" + os.path.relpath(GONDRET_DATA, HERE)
              + "`:", "",
              "| case | cells/d | box width/d | maxOverlap | release speed | approach at 1.5 a "
              "[m/s] | the case's speed [m/s] | U_in [m/s] | St | "
              "e/e_dry | contact [ms] | depth/a | top/a | top at [ms] | quasi-steady top/a | "
-             "at [ms] | way-out force over the quasi-steady | Gondret's top/a | "
+             "at [ms] | force over the quasi-steady, in | out | Gondret's top/a | "
              "at [ms] | speed rms (mean) difference [m/s] |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in sel:
         name = r["name"].split("-c")[0]
         b = bounce_analysis(os.path.join(RESULTS, f"{r['name']}.h5"), name)
         st, re_, rho_f, mu, d = CASES[name]
         q = quasi_steady_bounce(d / 2, rho_f, mu, b["approach"], saturation=float(r["saturation"]),
                                 cv=float(r["virtualMass"]))
-        ratio = way_out_force_ratio(os.path.join(RESULTS, f"{r['name']}.h5"), name)
+        h5 = os.path.join(RESULTS, f"{r['name']}.h5")
+        ratio_in, ratio_out = force_ratio(h5, name, "in"), force_ratio(h5, name, "out")
         ref = (f"{b['ref_top_a']:.3f} | {b['ref_top_ms']:.1f} | "
                f"{b['rms_speed']:.3f} ({b['mean_speed']:+.3f})" if "ref_top_a" in b else "- | - | -")
         lines.append(f"| St {r['St_case']} | {r['cpd']} | {r['boxWidth']} | {r['maxOverlap']} | "
@@ -750,7 +755,7 @@ def bounce_table(rows):
                      f"{float(r['U_in']):.3f} | {float(r['St']):.0f} | "
                      f"{float(r['e_over_edry']):.3f} | {b['contact_ms']:.2f} | {b['depth_a']:.3f} | "
                      f"{b['top_a']:.3f} | {b['top_ms']:.1f} | {q['top_a']:.3f} | "
-                     f"{q['top_ms']:.1f} | {ratio:.2f} | {ref} |")
+                     f"{q['top_ms']:.1f} | {ratio_in:.2f} | {ratio_out:.2f} | {ref} |")
     return lines
 
 

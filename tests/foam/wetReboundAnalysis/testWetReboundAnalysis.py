@@ -228,6 +228,33 @@ class QuasiSteadyBounce(unittest.TestCase):
         self.assertAlmostEqual(b["top_a"], top, delta=3e-3 * top)
 
 
+class ForceRatio(unittest.TestCase):
+    def test_in_and_out_against_the_quasi_steady_force(self):
+        # the synthetic bounce with a resolved force equal to the quasi-steady one on the way
+        # in and twice it on the way out (no collision force): ratios 1 and 2
+        st, re_, rho_f, mu, d = wr.CASES[NAME]
+        t, gap, w, _ = trajectory()
+        stokes = 6 * math.pi * mu * (d / 2)
+        below = np.flatnonzero(gap < 0)
+        fh = np.zeros_like(t)
+        for k in range(len(t)):
+            if gap[k] <= 0:
+                continue
+            c = stokes * (wr.brenner(gap[k] / A) + 0.15 * (rho_f * abs(w[k]) * d / mu) ** 0.687)
+            fh[k] = -c * w[k] * (1.0 if k < below[0] else 2.0)
+        n = len(t)
+        vec = lambda z: np.stack([np.zeros(n), np.zeros(n), z], axis=1).reshape(n, 1, 3)  # noqa: E731
+        h5 = os.path.join(tempfile.mkdtemp(dir=os.environ.get("TMPDIR")), "forces.h5")
+        with h5py.File(h5, "w") as f:
+            f["time"] = t
+            f["centre"] = vec(gap + A)
+            f["velocity"] = vec(w)
+            f["collisionForce"] = vec(np.zeros(n))
+            f["hydroForce"] = vec(fh)
+        self.assertAlmostEqual(wr.force_ratio(h5, NAME, "in"), 1.0, places=12)
+        self.assertAlmostEqual(wr.force_ratio(h5, NAME, "out"), 2.0, places=12)
+
+
 class WetReboundAnalysisWithoutApproach(unittest.TestCase):
     def test_a_series_starting_in_the_film_stops(self):
         # the approach speed is the sample before the first collision force: a series that

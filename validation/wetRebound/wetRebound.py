@@ -714,10 +714,11 @@ def force_ratio(h5, name, way, gaps=(0.1, 0.4)):
 
 
 def bounce_rows(rows):
-    """The --bounce runs, by case, resolution, box width and overlap cap."""
+    """The --bounce runs, by case, resolution, box width, overlap cap, saturation and C_v."""
     return sorted((r for r in rows if (r.get("bounce") or "0") == "1"),
                   key=lambda r: (float(r["St_case"]), int(r["cpd"]), float(r["boxWidth"]),
-                                 -float(r["maxOverlap"])))
+                                 -float(r["maxOverlap"]), float(r["saturation"]),
+                                 float(r["virtualMass"])))
 
 
 def bounce_table(rows):
@@ -733,12 +734,13 @@ def bounce_table(rows):
              "on the way in and out over the quasi-steady one (`force_ratio`); with Gondret's "
              "trajectory where its digitised file is in `" + os.path.relpath(GONDRET_DATA, HERE)
              + "`:", "",
-             "| case | cells/d | box width/d | maxOverlap | release speed | approach at 1.5 a "
+             "| case | cells/d | box width/d | maxOverlap | saturation | C_v | release speed | "
+             "approach at 1.5 a "
              "[m/s] | the case's speed [m/s] | U_in [m/s] | St | "
              "e/e_dry | contact [ms] | depth/a | top/a | top at [ms] | quasi-steady top/a | "
              "at [ms] | force over the quasi-steady, in | out | Gondret's top/a | "
              "at [ms] | speed rms (mean) difference [m/s] |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in sel:
         name = r["name"].split("-c")[0]
         b = bounce_analysis(os.path.join(RESULTS, f"{r['name']}.h5"), name)
@@ -750,6 +752,7 @@ def bounce_table(rows):
         ref = (f"{b['ref_top_a']:.3f} | {b['ref_top_ms']:.1f} | "
                f"{b['rms_speed']:.3f} ({b['mean_speed']:+.3f})" if "ref_top_a" in b else "- | - | -")
         lines.append(f"| St {r['St_case']} | {r['cpd']} | {r['boxWidth']} | {r['maxOverlap']} | "
+                     f"{r['saturation']} | {r['virtualMass']} | "
                      f"{r['releaseSpeed']} | {b['approach']:.3f} | "
                      f"{float(r['U_release']) / float(r['releaseSpeed']):.3f} | "
                      f"{float(r['U_in']):.3f} | {float(r['St']):.0f} | "
@@ -767,7 +770,9 @@ def bounce_metrics(rows, metrics):
         name = r["name"].split("-c")[0]
         b = bounce_analysis(os.path.join(RESULTS, f"{r['name']}.h5"), name)
         key = (f"{name}_{r['cpd']}_ov{r['maxOverlap']}"
-               + (f"_box{r['boxWidth']}" if r["boxWidth"] != f"{DEFAULT_BOX_WIDTH:g}" else ""))
+               + (f"_box{r['boxWidth']}" if r["boxWidth"] != f"{DEFAULT_BOX_WIDTH:g}" else "")
+               + (f"_sat{r['saturation']}" if r["saturation"] != "0.001" else "")
+               + (f"_cv{r['virtualMass']}" if r["virtualMass"] != "0.5" else ""))
         metrics[f"bounce_top_a_{key}"] = round(b["top_a"], 4)
         metrics[f"bounce_contact_ms_{key}"] = round(b["contact_ms"], 3)
         if "ref_top_a" in b:
@@ -788,7 +793,9 @@ def plot_bounces(rows, plt):
         for k, r in enumerate(x for x in sel if x["name"].startswith(name + "-")):
             b = bounce_analysis(os.path.join(RESULTS, f"{r['name']}.h5"), name)
             high = max(high, b["top_a"], b.get("ref_top_a", 0.0))
-            box = f", box {r['boxWidth']} d" if r["boxWidth"] != f"{DEFAULT_BOX_WIDTH:g}" else ""
+            box = ((f", box {r['boxWidth']} d" if r["boxWidth"] != f"{DEFAULT_BOX_WIDTH:g}" else "")
+                   + (f", saturation {r['saturation']}" if r["saturation"] != "0.001" else "")
+                   + (f", C_v {r['virtualMass']}" if r["virtualMass"] != "0.5" else ""))
             ax.plot(b["t"] * 1e3, b["gap_a"], "-", color=f"C{k}",
                     label=f"{r['cpd']} cells/d, maxOverlap {r['maxOverlap']}{box} "
                           f"(St {float(r['St']):.0f})")
